@@ -1,0 +1,34 @@
+#include "app/commands.h"
+#include "app/exit_status.h"
+#include "app/scene_input.h"
+#include "imaging/image_files.h"
+#include "reference/reference_renderer.h"
+
+#include <filesystem>
+#include <ostream>
+
+namespace app {
+
+// SPEC 8: DIR/reference.exr (RGB value, A mask), DIR/tolerance.exr (RGB), and
+// a tone-mapped sRGB preview DIR/reference.png for people.
+int runReferenceCommand(const SceneArguments& args, bool ideal, const std::string& outDir, std::ostream& out,
+                        std::ostream& err) {
+  return guardCommand(err, [&] {
+    const SceneInput input = loadSceneInput(args);
+    makeOutputDirectory(outDir);
+    const reference::ReferenceRenderer renderer(input.prepared);
+    reference::ReferenceOptions options;
+    options.ideal = ideal;
+    const reference::ReferenceImages images = renderer.render(input.frame, options);
+    const std::filesystem::path dir(outDir);
+    imaging::writeExr((dir / "reference.exr").string(), images.value);
+    imaging::writeExr((dir / "tolerance.exr").string(), images.tolerance);
+    imaging::writePngPreview((dir / "reference.png").string(), images.value);
+    out << "reference: " << input.frame.scene().name << " frame " << args.frame << (ideal ? " (ideal)" : "") << ": "
+        << images.value.width << "x" << images.value.height << ", " << images.maskedPixels
+        << " pixel(s) masked, written to " << outDir << "\n";
+    return kExitSuccess;
+  });
+}
+
+}  // namespace app

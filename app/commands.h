@@ -1,0 +1,35 @@
+// The `lightcts` subcommands (SPEC 8). main.cpp only parses arguments and calls
+// these; each returns an exit status (exit_status.h) and reports errors on
+// `err` with a message a user can act on.
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace app {
+
+struct SceneArguments {
+  std::string scenePath;
+  int frame = 0;
+};
+
+int runBackendsCommand(std::ostream& out, std::ostream& err);
+int runLightsCommand(const SceneArguments& args, std::ostream& out, std::ostream& err);
+int runReferenceCommand(const SceneArguments& args, bool ideal, const std::string& outDir,
+                        std::ostream& out, std::ostream& err);
+
+struct BackendArguments {
+  std::string backend;
+  std::string device;
+  std::string driver;
+};
+int runRenderCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& outFile,
+                     std::ostream& out, std::ostream& err);
+int runCompareCommand(const SceneArguments& args, const BackendArguments& backend, std::ostream& out,
+                      std::ostream& err);
+int runSuiteCommand(const std::vector<std::string>& backends, const std::string& scenesDir,
+                    const std::string& outDir, std::ostream& out, std::ostream& err);
+
+}  // namespace app

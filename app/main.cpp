@@ -1,0 +1,72 @@
+// `lightcts`: parses the command line (SPEC 8) and calls app/commands.h.
+// No logic lives here that a test could not reach through the commands.
+#include "app/commands.h"
+#include "app/exit_status.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App cli{"lightcts: conformance and benchmark suite for one real-time lighting model"};
+  cli.require_subcommand(1);
+  cli.set_help_all_flag("--help-all", "Show every subcommand's options");
+
+  app::SceneArguments scene;
+  app::BackendArguments backend;
+  std::string out;
+  bool ideal = false;
+  std::vector<std::string> suiteBackends;
+  std::string scenesDir = "suite/scenes";
+
+  auto addScene = [&](CLI::App* sub, bool withFrame) {
+    sub->add_option("--scene", scene.scenePath, "Scene file (SPEC 2)")->required();
+    if (withFrame) sub->add_option("--frame", scene.frame, "Frame of an animated scene, from 0")->default_val(0);
+  };
+  auto addBackend = [&](CLI::App* sub) {
+    sub->add_option("--backend", backend.backend, "vulkan | gl-egl | gl-osmesa")->required();
+    sub->add_option("--device", backend.device, "Device index or name substring");
+    sub->add_option("--driver", backend.driver, "GL backends: llvmpipe | softpipe")
+        ->check(CLI::IsMember({"llvmpipe", "softpipe"}));
+  };
+
+  auto* backendsCmd = cli.add_subcommand("backends", "List backends, drivers and devices");
+  auto* lightsCmd = cli.add_subcommand("lights", "Print the light selection as JSON (SPEC 5.4)");
+  addScene(lightsCmd, true);
+  auto* referenceCmd = cli.add_subcommand("reference", "Write reference, tolerance and mask images (EXR)");
+  addScene(referenceCmd, true);
+  referenceCmd->add_flag("--ideal", ideal, "No budgets: every non-baked light per pixel (SPEC 6)");
+  referenceCmd->add_option("--out", out, "Output folder")->required();
+  auto* renderCmd = cli.add_subcommand("render", "Render a scene on a backend to an RGBA float EXR");
+  addScene(renderCmd, true);
+  addBackend(renderCmd);
+  renderCmd->add_option("--out", out, "Output EXR file")->required();
+  auto* compareCmd = cli.add_subcommand("compare", "Render and compare against the reference: verdict and metrics");
+  addScene(compareCmd, true);
+  addBackend(compareCmd);
+  auto* runCmd = cli.add_subcommand("run", "Run the whole suite: results.json, junit.xml, report/index.html");
+  runCmd->add_option("--backend", suiteBackends, "Backends to run (default: every one present)");
+  runCmd->add_option("--scenes", scenesDir, "Scene folder")->default_val("suite/scenes");
+  runCmd->add_option("--out", out, "Output folder")->required();
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);  // prints the message
+    return app::kExitBadInput;
+  }
+
+  auto& o = std::cout;
+  auto& e = std::cerr;
+  if (*backendsCmd) return app::runBackendsCommand(o, e);
+  if (*lightsCmd) return app::runLightsCommand(scene, o, e);
+  if (*referenceCmd) return app::runReferenceCommand(scene, ideal, out, o, e);
+  if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
+  if (*compareCmd) return app::runCompareCommand(scene, backend, o, e);
+  if (*runCmd) return app::runSuiteCommand(suiteBackends, scenesDir, out, o, e);
+  return app::kExitBadInput;
+}

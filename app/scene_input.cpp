@@ -1,0 +1,50 @@
+#include "app/scene_input.h"
+
+#include "app/exit_status.h"
+#include "imaging/image_files.h"
+#include "lighting/scene_loader.h"
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+
+namespace app {
+
+SceneInput loadSceneInput(const SceneArguments& args) {
+  SceneInput input;
+  lighting::Scene scene = lighting::loadSceneFile(args.scenePath);
+  const int count = scene.frames.count;
+  if (args.frame < 0 || args.frame >= count)
+    throw InputError(args.scenePath + ": --frame " + std::to_string(args.frame) + " is out of range: the scene has " +
+                     std::to_string(count) + " frame(s), 0.." + std::to_string(count - 1));
+  input.prepared = lighting::prepareScene(std::move(scene));
+  input.frame = lighting::prepareFrame(input.prepared, args.frame);
+  return input;
+}
+
+int guardCommand(std::ostream& err, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const lighting::SceneLoadError& e) {
+    err << "lightcts: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const InputError& e) {
+    err << "lightcts: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const imaging::ImageFileError& e) {
+    err << "lightcts: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    err << "lightcts: internal error: " << e.what() << "\n";
+    return kExitInternalError;
+  }
+}
+
+void makeOutputDirectory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError("cannot create output folder " + dir + (ec ? ": " + ec.message() : ": not a folder"));
+}
+
+}  // namespace app

@@ -1,0 +1,26 @@
+// Writing and reading images with OpenImageIO. Writes go to a temporary file
+// in the same folder and are renamed into place, so a failed or interrupted
+// write never leaves a half-written image behind.
+#pragma once
+
+#include "imaging/image.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace imaging {
+
+class ImageFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Float EXR with the image's channels (3: RGB, 4: RGBA), row 0 at the top.
+void writeExr(const std::string& path, const Image& image);
+Image readExr(const std::string& path);
+
+// 8-bit sRGB PNG for people: linear RGB tone-mapped with x / (1 + x) per
+// channel, then encoded with the sRGB transfer function. Alpha is dropped.
+void writePngPreview(const std::string& path, const Image& image);
+
+}  // namespace imaging

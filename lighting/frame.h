@@ -1,0 +1,72 @@
+// A frame ready to render: the camera of that frame, the scene's geometry, and
+// every decision of SPEC 5 (visible set, packed lights, per-object lists,
+// shadow-mask channels). Backends and the reference both start from a Frame;
+// neither decides on its own which lights count.
+#pragma once
+
+#include "lighting/camera_view.h"
+#include "lighting/mesh.h"
+#include "lighting/object_light_lists.h"
+#include "lighting/scene.h"
+#include "lighting/shadow_mask_channels.h"
+#include "lighting/transform.h"
+#include "lighting/visible_lights.h"
+
+#include <memory>
+#include <vector>
+
+namespace lighting {
+
+struct ObjectGeometry {
+  Mesh mesh;                  // local space
+  ObjectTransform transform;  // local to world
+  BoundingSphere bounds;      // world space (SPEC 5.2)
+};
+
+// What does not change from frame to frame: meshes, transforms, bounds and the
+// bake-time shadow-mask assignment.
+struct PreparedScene {
+  Scene scene;
+  std::vector<ObjectGeometry> objects;
+  ShadowMaskAssignment shadowMask;
+};
+
+std::shared_ptr<const PreparedScene> prepareScene(Scene scene);
+
+// Which parts of the model a frame uses, so a backend can switch the rest off.
+struct ShaderFeatures {
+  bool directionalLights = false;
+  bool pointLights = false;
+  bool spotLights = false;
+  bool perObjectLists = false;
+  bool vertexLights = false;   // legacy profile only
+  bool shadowMask = false;     // a mixed light with a channel on an object with a mask
+  bool ambient = false;
+};
+
+// The lights that shade one object, as scene light indices.
+struct ObjectLights {
+  std::vector<int> perPixel;
+  std::vector<int> perVertex;  // legacy list positions 4-7
+};
+
+struct Frame {
+  std::shared_ptr<const PreparedScene> prepared;
+  int index = 0;
+  CameraView view;
+  LightSelection selection;
+  std::vector<ObjectLightList> objectLists;  // empty when per-object lists are not in use
+  ShaderFeatures features;
+
+  const Scene& scene() const { return prepared->scene; }
+  static bool perObjectListsEnabled(const Scene& scene);
+  // The lights that reach an object under the scene's budgets (SPEC 4).
+  ObjectLights lightsForObject(int object) const;
+  // SPEC 6 `--ideal`: every light that is not baked, per pixel, no budgets.
+  ObjectLights idealLightsForObject() const;
+};
+
+// Frame `index` (0-based; must be < scene.frames.count).
+Frame prepareFrame(std::shared_ptr<const PreparedScene> prepared, int index);
+
+}  // namespace lighting

@@ -1,0 +1,98 @@
+#include "lighting/gpu_packing.h"
+
+#include "lighting/light_math.h"
+
+namespace lighting {
+namespace {
+
+GpuVec4 vec4(const Vec3& v, double w) {
+  return {float(v.x), float(v.y), float(v.z), float(w)};
+}
+
+GpuMat4 mat4(const glm::dmat4& m) {
+  GpuMat4 out;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) out.m[c * 4 + r] = float(m[c][r]);
+  return out;
+}
+
+GpuLight packLight(const Frame& frame, int lightIndex) {
+  const Scene& scene = frame.scene();
+  const Light& light = scene.lights[lightIndex];
+  GpuLight g;
+  const bool directional = light.type == LightType::Directional;
+  if (directional) {
+    g.position = vec4(-light.direction, 0.0);
+    g.color = vec4(light.finalColor(), 0.0);
+  } else {
+    g.position = vec4(light.position - frame.view.camera.position, 1.0);
+    g.color = vec4(light.finalColor(), inverseRangeSquared(light.range));
+  }
+  g.spotDirection = vec4(-light.direction, 0.0);
+  const SpotFactors spot = lightSpotFactors(light, scene.pipeline.profile);
+  const int channel = frame.prepared->shadowMask.channelOfLight[lightIndex];
+  g.spotAngles = {float(spot.a), float(spot.b), float(channel),
+                  channel >= 0 ? float(light.shadowStrength) : 0.0f};
+  return g;
+}
+
+}  // namespace
+
+GpuFrameBlock packFrameBlock(const Frame& frame) {
+  GpuFrameBlock block;
+  block.viewProjection = mat4(frame.view.cameraRelativeViewProjection());
+  block.ambient = vec4(frame.scene().ambient, 0.0);
+  const PackedLights& packed = frame.selection.packed;
+  block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), 0, 0};
+  for (std::size_t i = 0; i < packed.directional.size(); ++i)
+    block.directionalLights[i] = packLight(frame, packed.directional[i]);
+  for (std::size_t i = 0; i < packed.other.size(); ++i)
+    block.otherLights[i] = packLight(frame, packed.other[i]);
+  return block;
+}
+
+GpuObjectBlock packObjectBlock(const Frame& frame, int object) {
+  const Object& obj = frame.scene().objects[object];
+  const ObjectGeometry& geometry = frame.prepared->objects[object];
+  const ObjectTransform& t = geometry.transform;
+  glm::dmat4 model(t.rotation * t.scale);
+  const Vec3 translate = t.translate - frame.view.camera.position;
+  model[3] = glm::dvec4(translate, 1.0);
+
+  GpuObjectBlock block;
+  block.model = mat4(model);
+  block.normalMatrix = mat4(glm::dmat4(t.rotation));
+  block.albedo = vec4(obj.albedo, 1.0);
+  const bool hasMap = obj.hasLightmap();
+  block.lightList = {0, hasMap ? 1 : 0, hasMap ? 1 : 0, 0};
+  auto index = [&block](int k) -> std::int32_t& { return block.lightIndices[k / 4][k % 4]; };
+  for (int k = 0; k < kMaxLightsPerObject; ++k) index(k) = -1;
+  if (!frame.objectLists.empty()) {
+    const ObjectLightList& list = frame.objectLists[object];
+    block.lightList.x = list.count;
+    for (int k = 0; k < int(list.indices.size()); ++k) index(k) = list.indices[k];
+  }
+  if (obj.mesh.type == MeshType::Plane) {
+    block.lightmapTransform = {float(1.0 / obj.mesh.planeSizeX), float(1.0 / obj.mesh.planeSizeZ), 0.5f, 0.5f};
+  }
+  return block;
+}
+
+std::vector<GpuVertex> packVertices(const Mesh& mesh) {
+  std::vector<GpuVertex> out(mesh.positions.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const Vec3& p = mesh.positions[i];
+    const Vec3& n = mesh.normals[i];
+    out[i] = {{float(p.x), float(p.y), float(p.z)}, {float(n.x), float(n.y), float(n.z)}};
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> packIndices(const Mesh& mesh) {
+  std::vector<std::uint32_t> out;
+  out.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles) out.insert(out.end(), {t.x, t.y, t.z});
+  return out;
+}
+
+}  // namespace lighting

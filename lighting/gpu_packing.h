@@ -1,0 +1,77 @@
+// The bytes every backend uploads (std140 uniform blocks), built once here so
+// Vulkan and OpenGL draw from identical data. The GLSL side of these structs is
+// shaders/light_data.glsl; tests/gpu_packing_test.cpp pins every offset to the
+// std140 rules.
+//
+// Positions are relative to the frame's camera: the subtraction happens here
+// in double, so a scene 1e6 from the origin reaches float32 as small numbers
+// (SPEC 7's far-from-origin cases).
+#pragma once
+
+#include "lighting/frame.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace lighting {
+
+// std140 has no 3-component type of size 12 in arrays; everything is padded to vec4.
+struct alignas(16) GpuVec4 {
+  float x = 0, y = 0, z = 0, w = 0;
+};
+struct alignas(16) GpuIVec4 {
+  std::int32_t x = 0, y = 0, z = 0, w = 0;
+  std::int32_t& operator[](int i) { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+};
+struct alignas(16) GpuMat4 {
+  float m[16] = {};  // column-major, as GLSL reads a mat4
+};
+
+// One light, directional or local (SPEC 3.1-3.3 and the seeds' arrays).
+struct GpuLight {
+  GpuVec4 position;       // xyz: camera-relative position (local) or L = -direction (directional); w: 1 local, 0 directional
+  GpuVec4 color;          // rgb: finalColor = color * intensity; w: invRangeSq (0 for directional)
+  GpuVec4 spotDirection;  // xyz: spotDir = -direction; w: unused
+  GpuVec4 spotAngles;     // x: a, y: b (point lights 0, 1); z: shadow-mask channel or -1; w: shadow strength
+};
+static_assert(sizeof(GpuLight) == 64);
+
+constexpr int kGpuMaxDirectionalLights = 4;
+constexpr int kGpuMaxOtherLights = 64;
+
+// Binding 0: per frame.
+struct GpuFrameBlock {
+  GpuMat4 viewProjection;  // camera-relative world to clip (x right, y up, depth 0..1)
+  GpuVec4 ambient;         // rgb
+  GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind)
+  GpuLight directionalLights[kGpuMaxDirectionalLights];
+  GpuLight otherLights[kGpuMaxOtherLights];
+};
+static_assert(sizeof(GpuFrameBlock) == 4448);
+
+// Binding 1: per object.
+struct GpuObjectBlock {
+  GpuMat4 model;          // local to camera-relative world: rotation * scale, then translate - camera
+  GpuMat4 normalMatrix;   // the rotation R (SPEC 1), upper 3x3 used
+  GpuVec4 albedo;         // rgb
+  GpuIVec4 lightList;     // x: list count (may exceed 8), y: lightmap present, z: shadow mask present
+  GpuIVec4 lightIndices[2];  // the first min(count, 8) packed indices, -1 past the end
+  GpuVec4 lightmapTransform; // u = x_local * x + z, v = z_local * y + w (SPEC 3.6)
+};
+static_assert(sizeof(GpuObjectBlock) == 208);
+
+// Vertex data: local position and normal, float32, interleaved.
+struct GpuVertex {
+  float position[3];
+  float normal[3];
+};
+static_assert(sizeof(GpuVertex) == 24);
+
+GpuFrameBlock packFrameBlock(const Frame& frame);
+GpuObjectBlock packObjectBlock(const Frame& frame, int object);
+std::vector<GpuVertex> packVertices(const Mesh& mesh);
+std::vector<std::uint32_t> packIndices(const Mesh& mesh);
+
+}  // namespace lighting

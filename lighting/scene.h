@@ -1,0 +1,124 @@
+// The validated scene of SPEC section 2. Every field holds its default when the
+// file leaves it out; scene_loader.cpp is the only place that fills these in.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lighting {
+
+using Vec3 = glm::dvec3;
+
+struct ImageSize {
+  int width = 128;
+  int height = 128;
+};
+
+enum class Projection { Perspective, Orthographic };
+
+struct Camera {
+  Vec3 position{0, 10, 0};
+  Vec3 target{0, 0, 0};
+  Vec3 up{0, 0, -1};
+  Projection projection = Projection::Orthographic;
+  double fovYDeg = 60;      // perspective only; not in SPEC's example, see docs/scene-format.md
+  double orthoHeight = 10;  // orthographic only: world units of the vertical extent
+  double nearPlane = 0.1;
+  double farPlane = 100;
+};
+
+enum class MeshType { Plane, Sphere, Box };
+
+struct MeshSpec {
+  MeshType type = MeshType::Plane;
+  double planeSizeX = 10, planeSizeZ = 10;
+  int subdivisions = 1;
+  double sphereRadius = 0.5;
+  int sphereSegments = 32, sphereRings = 16;
+  Vec3 boxSize{1, 1, 1};
+};
+
+struct Transform {
+  Vec3 translate{0, 0, 0};
+  Vec3 rotateDeg{0, 0, 0};  // R = Ry(y) * Rx(x) * Rz(z)
+  double scale = 1;         // uniform only (SPEC 1)
+};
+
+struct Object {
+  std::string name;
+  MeshSpec mesh;
+  Transform transform;
+  Vec3 albedo{1, 1, 1};
+  bool isStatic = false;
+  int lightmapResolution = 0;
+
+  bool hasLightmap() const { return isStatic && lightmapResolution > 0; }
+};
+
+enum class LightType { Directional, Point, Spot };
+enum class LightMode { Realtime, Mixed, Baked };
+enum class BakeFalloff { InverseSquared, InverseSquaredNoRange, Legacy };
+
+struct Light {
+  std::string name;
+  LightType type = LightType::Spot;
+  Vec3 position{0, 2, 0};
+  Vec3 direction{0, -1, 0};  // the way the light travels, normalised by the loader
+  double range = 6;
+  double spotAngleDeg = 60;                   // the full outer cone
+  std::optional<double> innerSpotAngleDeg;    // absent: the legacy rule (SPEC 3.4)
+  Vec3 color{1, 1, 1};
+  double intensity = 2;
+  LightMode mode = LightMode::Realtime;
+  bool shadows = false;
+  double shadowStrength = 1;
+  BakeFalloff bakeFalloff = BakeFalloff::InverseSquared;
+
+  Vec3 finalColor() const { return color * intensity; }
+};
+
+enum class Profile { Srp, Legacy };
+enum class RenderPath { Forward, Deferred };
+enum class DeferredBuffer { Hdr32, Hdr16, Ldr8 };
+
+struct Pipeline {
+  Profile profile = Profile::Srp;
+  RenderPath path = RenderPath::Forward;
+  bool lightsPerObject = false;
+  DeferredBuffer deferredBuffer = DeferredBuffer::Hdr32;
+};
+
+struct CameraKeyframe {
+  Vec3 position;
+  Vec3 target;
+};
+
+struct Frames {
+  int count = 1;
+  std::vector<CameraKeyframe> cameraPath;  // empty, or at least two keyframes
+};
+
+struct Expectation {
+  double toleranceScale = 1;
+  long long maxFailingPixels = 0;
+  bool expectFail = false;
+};
+
+struct Scene {
+  std::string sourcePath;  // the file it was loaded from, for messages
+  std::string name;
+  std::string description;
+  ImageSize image;
+  Camera camera;
+  Pipeline pipeline;
+  Vec3 ambient{0, 0, 0};
+  std::vector<Object> objects;
+  std::vector<Light> lights;
+  Frames frames;
+  Expectation expect;
+};
+
+}  // namespace lighting

@@ -1,0 +1,761 @@
+// Reads a scene file into lighting::Scene and rejects everything SPEC section 2
+// calls an error. docs/scene-format.md lists every key with its type, default
+// and range, and the rules SPEC leaves open that this file decides.
+#include "lighting/scene_loader.h"
+
+#include "lighting/json_locations.h"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <span>
+#include <sstream>
+#include <unordered_set>
+#include <utility>
+
+namespace lighting {
+
+std::string SceneError::format() const {
+  std::string text = file;
+  if (line > 0) text += ":" + std::to_string(line) + ":" + std::to_string(column);
+  text += ": ";
+  if (!jsonPath.empty()) text += jsonPath + ": ";
+  return text + message;
+}
+
+SceneLoadError::SceneLoadError(SceneError error)
+    : std::runtime_error(error.format()), error_(std::move(error)) {}
+
+namespace {
+
+// Ordered, so that of several unknown keys the first one in the file is named.
+using Json = nlohmann::ordered_json;
+using Keys = std::span<const std::string_view>;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// The largest integer a JSON number carries exactly through a double.
+constexpr long long kMaxExactInteger = 9007199254740992LL;  // 2^53
+// 8192 is the largest image side, 4096 the largest mesh tessellation and
+// lightmap: bounds that keep memory finite while leaving room for any test.
+constexpr long long kMaxImageSide = 8192;
+constexpr long long kMaxTessellation = 4096;
+constexpr long long kMaxLightmapResolution = 4096;
+constexpr long long kMaxFrames = 10000;
+// Below this sine of the angle between up and the view direction, lookAt has
+// no usable basis.
+constexpr double kMinUpSine = 1e-6;
+
+// The one place that builds errors: every failure of loading goes through here.
+[[noreturn]] void throwSceneError(std::string file, std::string jsonPath, TextPosition where,
+                                  std::string message) {
+  throw SceneLoadError(SceneError{std::move(file), std::move(jsonPath), where.line, where.column,
+                                  std::move(message)});
+}
+
+std::string formatNumber(double value) {
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return std::string(buffer.data(), result.ptr);
+}
+
+std::string joinKeys(Keys keys) {
+  std::string joined;
+  for (const std::string_view key : keys) {
+    if (!joined.empty()) joined += ", ";
+    joined += key;
+  }
+  return joined;
+}
+
+bool contains(Keys keys, std::string_view key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); }
+
+std::string describeType(const Json& value) {
+  switch (value.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "a number";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::object: return "an object";
+    default: return "an unsupported value";
+  }
+}
+
+// "an array of 2 values" says more than "an array" when the length is what is wrong.
+std::string describeArrayOrType(const Json& value) {
+  if (!value.is_array()) return describeType(value);
+  return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " value" : " values");
+}
+
+// An interval of allowed numbers, and how a message spells it ("> 0", "in (0, 180]").
+struct Bounds {
+  double min = -kInfinity;
+  bool minOpen = false;
+  double max = kInfinity;
+  bool maxOpen = false;
+
+  bool contains(double v) const {
+    const bool aboveMin = minOpen ? v > min : v >= min;
+    const bool belowMax = maxOpen ? v < max : v <= max;
+    return aboveMin && belowMax;
+  }
+
+  std::string describe() const {
+    const bool hasMin = min > -kInfinity;
+    const bool hasMax = max < kInfinity;
+    if (hasMin && hasMax) {
+      return std::string("in ") + (minOpen ? "(" : "[") + formatNumber(min) + ", " + formatNumber(max) +
+             (maxOpen ? ")" : "]");
+    }
+    if (hasMin) return (minOpen ? "> " : ">= ") + formatNumber(min);
+    if (hasMax) return (maxOpen ? "< " : "<= ") + formatNumber(max);
+    return "";
+  }
+};
+
+constexpr Bounds kAnyNumber{};
+constexpr Bounds above(double min) { return {min, true, kInfinity, false}; }
+constexpr Bounds atLeast(double min) { return {min, false, kInfinity, false}; }
+constexpr Bounds closed(double min, double max) { return {min, false, max, false}; }
+
+template <typename T>
+struct Choice {
+  std::string_view name;
+  T value;
+};
+
+template <typename T, std::size_t N>
+std::string_view choiceName(const std::array<Choice<T>, N>& choices, T value) {
+  for (const Choice<T>& choice : choices) {
+    if (choice.value == value) return choice.name;
+  }
+  return "?";
+}
+
+// The keys each object may hold, in the order SPEC 2's example lists them.
+constexpr std::array<std::string_view, 11> kSceneKeys{"lightcts", "name",    "description", "image",
+                                                      "camera",   "pipeline", "ambient",    "objects",
+                                                      "lights",   "frames",   "expect"};
+constexpr std::array<std::string_view, 2> kImageKeys{"width", "height"};
+constexpr std::array<std::string_view, 8> kCameraKeys{"position",  "target", "up",   "projection",
+                                                      "fov_y_deg", "height", "near", "far"};
+constexpr std::array<std::string_view, 7> kPerspectiveKeys{"position",  "target", "up", "projection",
+                                                           "fov_y_deg", "near",   "far"};
+constexpr std::array<std::string_view, 7> kOrthographicKeys{"position", "target", "up", "projection",
+                                                            "height",   "near",   "far"};
+constexpr std::array<std::string_view, 4> kPipelineKeys{"profile", "path", "lights_per_object",
+                                                        "deferred_buffer"};
+constexpr std::array<std::string_view, 6> kObjectKeys{"name",     "mesh",   "transform",
+                                                      "material", "static", "lightmap_resolution"};
+constexpr std::array<std::string_view, 6> kMeshKeys{"type", "size", "subdivisions", "radius", "segments", "rings"};
+constexpr std::array<std::string_view, 3> kPlaneKeys{"type", "size", "subdivisions"};
+constexpr std::array<std::string_view, 4> kSphereKeys{"type", "radius", "segments", "rings"};
+constexpr std::array<std::string_view, 2> kBoxKeys{"type", "size"};
+constexpr std::array<std::string_view, 3> kTransformKeys{"translate", "rotate_deg", "scale"};
+constexpr std::array<std::string_view, 1> kMaterialKeys{"albedo"};
+constexpr std::array<std::string_view, 13> kLightKeys{
+    "name",  "type",      "position", "direction", "range",  "spot_angle_deg",  "inner_spot_angle_deg",
+    "color", "intensity", "mode",     "shadows",   "shadow_strength", "bake_falloff"};
+constexpr std::array<std::string_view, 2> kFramesKeys{"count", "camera_path"};
+constexpr std::array<std::string_view, 2> kKeyframeKeys{"position", "target"};
+constexpr std::array<std::string_view, 3> kExpectKeys{"tolerance_scale", "max_failing_pixels", "expect_fail"};
+
+constexpr std::array<Choice<Projection>, 2> kProjections{
+    {{"perspective", Projection::Perspective}, {"orthographic", Projection::Orthographic}}};
+constexpr std::array<Choice<MeshType>, 3> kMeshTypes{
+    {{"plane", MeshType::Plane}, {"sphere", MeshType::Sphere}, {"box", MeshType::Box}}};
+constexpr std::array<Choice<LightType>, 3> kLightTypes{
+    {{"directional", LightType::Directional}, {"point", LightType::Point}, {"spot", LightType::Spot}}};
+constexpr std::array<Choice<LightMode>, 3> kLightModes{
+    {{"realtime", LightMode::Realtime}, {"mixed", LightMode::Mixed}, {"baked", LightMode::Baked}}};
+constexpr std::array<Choice<BakeFalloff>, 3> kBakeFalloffs{{{"inverse_squared", BakeFalloff::InverseSquared},
+                                                            {"inverse_squared_no_range", BakeFalloff::InverseSquaredNoRange},
+                                                            {"legacy", BakeFalloff::Legacy}}};
+constexpr std::array<Choice<Profile>, 2> kProfiles{{{"srp", Profile::Srp}, {"legacy", Profile::Legacy}}};
+constexpr std::array<Choice<RenderPath>, 2> kRenderPaths{
+    {{"forward", RenderPath::Forward}, {"deferred", RenderPath::Deferred}}};
+constexpr std::array<Choice<DeferredBuffer>, 3> kDeferredBuffers{
+    {{"hdr32", DeferredBuffer::Hdr32}, {"hdr16", DeferredBuffer::Hdr16}, {"ldr8", DeferredBuffer::Ldr8}}};
+
+// `v` scaled to unit length, or nullopt for the zero vector. Dividing by the
+// largest component first keeps tiny and huge vectors from under- or overflowing.
+std::optional<Vec3> unitVector(const Vec3& v) {
+  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (largest == 0) return std::nullopt;
+  const Vec3 scaled = v / largest;
+  return scaled / glm::length(scaled);
+}
+
+bool isParallel(const Vec3& unitA, const Vec3& unitB) { return glm::length(glm::cross(unitA, unitB)) < kMinUpSine; }
+
+// A value of the document with its RFC 6901 pointer, so that any error about
+// it can name where it is (SPEC 2).
+struct Node {
+  const Json& value;
+  std::string pointer;
+};
+
+// Walks the parsed document; holds the text only to find line and column when
+// something is wrong.
+class SceneReader {
+ public:
+  SceneReader(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
+
+  Scene readScene(const Json& document) const {
+    const Node root{document, ""};
+    expectObject(root);
+    readFormatVersion(root);
+    checkKeys(root, kSceneKeys);
+    for (const std::string_view key : {"image", "camera", "objects", "lights"}) requireMember(root, key);
+
+    Scene scene;
+    scene.name = std::filesystem::path(file_).stem().string();
+    if (auto name = member(root, "name")) scene.name = readString(*name);
+    if (auto description = member(root, "description")) scene.description = readString(*description);
+    scene.image = readImage(*member(root, "image"));
+    scene.camera = readCamera(*member(root, "camera"));
+    if (auto pipeline = member(root, "pipeline")) scene.pipeline = readPipeline(*pipeline);
+    if (auto ambient = member(root, "ambient")) scene.ambient = readVec3(*ambient, atLeast(0));
+    scene.objects = readArray(*member(root, "objects"), &SceneReader::readObject);
+    scene.lights = readArray(*member(root, "lights"), &SceneReader::readLight);
+    if (auto frames = member(root, "frames")) scene.frames = readFrames(*frames, scene.camera);
+    if (auto expect = member(root, "expect")) scene.expect = readExpectation(*expect);
+    return scene;
+  }
+
+ private:
+  // --- errors -------------------------------------------------------------
+
+  [[noreturn]] void fail(const Node& node, std::string message) const {
+    failAt(node.pointer, node.pointer, JsonLocationTarget::Value, std::move(message));
+  }
+
+  // For an unknown key the key itself is the place to look, not its value.
+  [[noreturn]] void failOnKey(const Node& node, std::string message) const {
+    failAt(node.pointer, node.pointer, JsonLocationTarget::Key, std::move(message));
+  }
+
+  [[noreturn]] void failAt(const std::string& pointer, const std::string& locatedAt, JsonLocationTarget target,
+                           std::string message) const {
+    const TextPosition where = locateJsonPointer(text_, locatedAt, target).value_or(TextPosition{});
+    throwSceneError(file_, pointer, where, std::move(message));
+  }
+
+  // --- objects and keys -----------------------------------------------------
+
+  static Node child(const Node& object, std::string_view key, const Json& value) {
+    return {value, object.pointer + "/" + escapeJsonPointerToken(key)};
+  }
+
+  void expectObject(const Node& node) const {
+    if (!node.value.is_object()) fail(node, "expected an object, got " + describeType(node.value));
+  }
+
+  std::optional<Node> member(const Node& object, std::string_view key) const {
+    const auto found = object.value.find(key);
+    if (found == object.value.end()) return std::nullopt;
+    return child(object, key, *found);
+  }
+
+  // A missing key has no place of its own, so the error points at the object that lacks it.
+  void requireMember(const Node& object, std::string_view key) const {
+    if (object.value.contains(key)) return;
+    failAt(object.pointer + "/" + escapeJsonPointerToken(key), object.pointer, JsonLocationTarget::Value,
+           "missing required key '" + std::string(key) + "'");
+  }
+
+  // Keys that belong to another variant of the object (a sphere's radius on a
+  // plane) get a message of their own instead of "unknown key".
+  struct OtherVariants {
+    Keys keys;
+    std::string chosen;  // e.g. "mesh type 'plane'"
+  };
+
+  void checkKeys(const Node& object, Keys allowed, const OtherVariants* others = nullptr) const {
+    for (const auto& item : object.value.items()) {
+      const std::string& key = item.key();
+      if (contains(allowed, key)) continue;
+      const Node node = child(object, key, item.value());
+      if (others && contains(others->keys, key)) {
+        failOnKey(node, "key '" + key + "' does not apply to " + others->chosen);
+      }
+      failOnKey(node, "unknown key '" + key + "'; expected one of: " + joinKeys(allowed));
+    }
+  }
+
+  template <typename T>
+  std::vector<T> readArray(const Node& node, T (SceneReader::*readElement)(const Node&, std::size_t) const) const {
+    if (!node.value.is_array()) fail(node, "expected an array, got " + describeType(node.value));
+    std::vector<T> elements;
+    elements.reserve(node.value.size());
+    for (std::size_t i = 0; i < node.value.size(); ++i) {
+      elements.push_back((this->*readElement)({node.value[i], node.pointer + "/" + std::to_string(i)}, i));
+    }
+    return elements;
+  }
+
+  // --- scalars --------------------------------------------------------------
+
+  double readNumber(const Node& node, const Bounds& bounds = kAnyNumber) const {
+    if (!node.value.is_number()) fail(node, "expected a number, got " + describeType(node.value));
+    const double value = node.value.get<double>();
+    // nlohmann-json 3.11.2 already refuses 1e999 while parsing; this guards
+    // versions that turn it into infinity.
+    if (!std::isfinite(value)) {
+      fail(node, "expected a finite number, got " + formatNumber(value) +
+                     " (non-finite numbers are not allowed in a scene)");
+    }
+    if (!bounds.contains(value)) {
+      fail(node, "expected a number " + bounds.describe() + ", got " + formatNumber(value));
+    }
+    return value;
+  }
+
+  // JSON has one number type, so 128.0 counts as an integer (as in JSON Schema);
+  // 1.5 does not.
+  long long readInteger(const Node& node, long long min, long long max) const {
+    const std::string expected = "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    if (!node.value.is_number()) fail(node, expected + ", got " + describeType(node.value));
+    const double value = node.value.get<double>();
+    if (!std::isfinite(value) || std::trunc(value) != value) fail(node, expected + ", got " + formatNumber(value));
+    if (value < static_cast<double>(min) || value > static_cast<double>(max)) {
+      fail(node, expected + ", got " + formatNumber(value));
+    }
+    return static_cast<long long>(value);
+  }
+
+  int readInt(const Node& node, long long min, long long max) const {
+    return static_cast<int>(readInteger(node, min, max));
+  }
+
+  bool readBool(const Node& node) const {
+    if (!node.value.is_boolean()) fail(node, "expected true or false, got " + describeType(node.value));
+    return node.value.get<bool>();
+  }
+
+  std::string readString(const Node& node) const {
+    if (!node.value.is_string()) fail(node, "expected a string, got " + describeType(node.value));
+    return node.value.get<std::string>();
+  }
+
+  template <typename T, std::size_t N>
+  T readChoice(const Node& node, const std::array<Choice<T>, N>& choices) const {
+    std::string names;
+    for (const Choice<T>& choice : choices) names += (names.empty() ? "" : ", ") + std::string(choice.name);
+    if (!node.value.is_string()) fail(node, "expected one of: " + names + "; got " + describeType(node.value));
+    const std::string text = node.value.get<std::string>();
+    for (const Choice<T>& choice : choices) {
+      if (choice.name == text) return choice.value;
+    }
+    fail(node, "expected one of: " + names + "; got '" + text + "'");
+  }
+
+  Vec3 readVec3(const Node& node, const Bounds& bounds = kAnyNumber) const {
+    if (!node.value.is_array() || node.value.size() != 3) {
+      fail(node, "expected an array of 3 numbers, got " + describeArrayOrType(node.value));
+    }
+    const auto element = [&](std::size_t i) {
+      return readNumber({node.value[i], node.pointer + "/" + std::to_string(i)}, bounds);
+    };
+    return Vec3{element(0), element(1), element(2)};  // braces: evaluated in order, so the first bad element is named
+  }
+
+  // --- scene parts ----------------------------------------------------------
+
+  void readFormatVersion(const Node& root) const {
+    requireMember(root, "lightcts");
+    const Node version = *member(root, "lightcts");
+    if (!version.value.is_number()) fail(version, "expected the format version 1, got " + describeType(version.value));
+    const double number = version.value.get<double>();
+    if (number != 1.0) fail(version, "unsupported format version " + formatNumber(number) + "; this loader reads version 1");
+  }
+
+  ImageSize readImage(const Node& node) const {
+    expectObject(node);
+    checkKeys(node, kImageKeys);
+    ImageSize image;
+    if (auto width = member(node, "width")) image.width = readInt(*width, 1, kMaxImageSide);
+    if (auto height = member(node, "height")) image.height = readInt(*height, 1, kMaxImageSide);
+    return image;
+  }
+
+  Camera readCamera(const Node& node) const {
+    expectObject(node);
+    Camera camera;
+    if (auto projection = member(node, "projection")) camera.projection = readChoice(*projection, kProjections);
+    // fov_y_deg on an orthographic camera (the default) would be silently
+    // ignored; it is far more likely a missing "projection": "perspective".
+    const bool perspective = camera.projection == Projection::Perspective;
+    const OtherVariants others{kCameraKeys,
+                               "projection '" + std::string(choiceName(kProjections, camera.projection)) + "'"};
+    checkKeys(node, perspective ? Keys(kPerspectiveKeys) : Keys(kOrthographicKeys), &others);
+
+    if (auto fov = member(node, "fov_y_deg")) camera.fovYDeg = readNumber(*fov, {0, true, 180, true});
+    if (auto height = member(node, "height")) camera.orthoHeight = readNumber(*height, above(0));
+    readClipPlanes(node, camera);
+    readLookAt(node, camera);
+    return camera;
+  }
+
+  void readLookAt(const Node& node, Camera& camera) const {
+    const auto position = member(node, "position");
+    const auto target = member(node, "target");
+    const auto up = member(node, "up");
+    if (position) camera.position = readVec3(*position);
+    if (target) camera.target = readVec3(*target);
+    if (up) camera.up = readVec3(*up);
+    // The defaults make a valid lookAt, so a check fails only when one of
+    // these was given; the error names the most specific one.
+    if (up && !unitVector(camera.up)) fail(*up, "up must not be the zero vector");
+    const auto problem = lookAtProblem(camera.position, camera.target, camera.up);
+    if (!problem) return;
+    const std::optional<Node>& culprit = (*problem == LookAtProblem::UpParallel && up) ? up : target ? target : position;
+    fail(*culprit, describe(*problem, camera.up));
+  }
+
+  void readClipPlanes(const Node& node, Camera& camera) const {
+    const auto nearNode = member(node, "near");
+    const auto farNode = member(node, "far");
+    if (nearNode) camera.nearPlane = readNumber(*nearNode, above(0));
+    if (farNode) camera.farPlane = readNumber(*farNode, above(0));
+    if (camera.farPlane > camera.nearPlane) return;
+    if (farNode) {
+      fail(*farNode, "expected far > near (" + formatNumber(camera.nearPlane) + "), got " +
+                         formatNumber(camera.farPlane));
+    }
+    fail(*nearNode, "expected near < far (" + formatNumber(camera.farPlane) + ", the default), got " +
+                        formatNumber(camera.nearPlane));
+  }
+
+  enum class LookAtProblem { SamePoint, UpParallel };
+
+  // SPEC 1: lookAt(position, target, up) needs a view direction and an up
+  // that is not along it.
+  static std::optional<LookAtProblem> lookAtProblem(const Vec3& position, const Vec3& target, const Vec3& up) {
+    const auto view = unitVector(target - position);
+    if (!view) return LookAtProblem::SamePoint;
+    if (isParallel(*view, *unitVector(up))) return LookAtProblem::UpParallel;
+    return std::nullopt;
+  }
+
+  static std::string describe(LookAtProblem problem, const Vec3& up) {
+    if (problem == LookAtProblem::SamePoint) return "target must differ from position";
+    return "up [" + formatNumber(up.x) + ", " + formatNumber(up.y) + ", " + formatNumber(up.z) +
+           "] is parallel to the view direction (target - position)";
+  }
+
+  Pipeline readPipeline(const Node& node) const {
+    expectObject(node);
+    checkKeys(node, kPipelineKeys);
+    Pipeline pipeline;
+    if (auto profile = member(node, "profile")) pipeline.profile = readChoice(*profile, kProfiles);
+    if (auto path = member(node, "path")) pipeline.path = readChoice(*path, kRenderPaths);
+    if (auto perObject = member(node, "lights_per_object")) pipeline.lightsPerObject = readBool(*perObject);
+    if (auto buffer = member(node, "deferred_buffer")) pipeline.deferredBuffer = readChoice(*buffer, kDeferredBuffers);
+    return pipeline;
+  }
+
+  Object readObject(const Node& node, std::size_t index) const {
+    expectObject(node);
+    checkKeys(node, kObjectKeys);
+    Object object;
+    object.name = "object" + std::to_string(index);
+    if (auto name = member(node, "name")) object.name = readString(*name);
+    if (auto mesh = member(node, "mesh")) object.mesh = readMesh(*mesh);
+    if (auto transform = member(node, "transform")) object.transform = readTransform(*transform);
+    if (auto material = member(node, "material")) object.albedo = readMaterial(*material);
+    if (auto isStatic = member(node, "static")) object.isStatic = readBool(*isStatic);
+    if (auto resolution = member(node, "lightmap_resolution")) {
+      object.lightmapResolution = readInt(*resolution, 0, kMaxLightmapResolution);
+      if (object.lightmapResolution > 0 && object.mesh.type != MeshType::Plane) {
+        fail(*resolution, "lightmaps are only supported on planes (SPEC 2); this mesh is a " +
+                              std::string(choiceName(kMeshTypes, object.mesh.type)));
+      }
+    }
+    return object;
+  }
+
+  MeshSpec readMesh(const Node& node) const {
+    expectObject(node);
+    MeshSpec mesh;
+    if (auto type = member(node, "type")) mesh.type = readChoice(*type, kMeshTypes);
+    const OtherVariants others{kMeshKeys, "mesh type '" + std::string(choiceName(kMeshTypes, mesh.type)) + "'"};
+    switch (mesh.type) {
+      case MeshType::Plane:
+        checkKeys(node, kPlaneKeys, &others);
+        if (auto size = member(node, "size")) readPlaneSize(*size, mesh);
+        if (auto subdivisions = member(node, "subdivisions")) {
+          mesh.subdivisions = readInt(*subdivisions, 1, kMaxTessellation);
+        }
+        break;
+      case MeshType::Sphere:
+        checkKeys(node, kSphereKeys, &others);
+        if (auto radius = member(node, "radius")) mesh.sphereRadius = readNumber(*radius, above(0));
+        if (auto segments = member(node, "segments")) mesh.sphereSegments = readInt(*segments, 3, kMaxTessellation);
+        if (auto rings = member(node, "rings")) mesh.sphereRings = readInt(*rings, 2, kMaxTessellation);
+        break;
+      case MeshType::Box:
+        checkKeys(node, kBoxKeys, &others);
+        if (auto size = member(node, "size")) mesh.boxSize = readVec3(*size, above(0));
+        break;
+    }
+    return mesh;
+  }
+
+  void readPlaneSize(const Node& node, MeshSpec& mesh) const {
+    if (!node.value.is_array() || node.value.size() != 2) {
+      fail(node, "expected [sx, sz], an array of 2 numbers, got " + describeArrayOrType(node.value));
+    }
+    mesh.planeSizeX = readNumber({node.value[0], node.pointer + "/0"}, above(0));
+    mesh.planeSizeZ = readNumber({node.value[1], node.pointer + "/1"}, above(0));
+  }
+
+  Transform readTransform(const Node& node) const {
+    expectObject(node);
+    checkKeys(node, kTransformKeys);
+    Transform transform;
+    if (auto translate = member(node, "translate")) transform.translate = readVec3(*translate);
+    if (auto rotate = member(node, "rotate_deg")) transform.rotateDeg = readVec3(*rotate);
+    if (auto scale = member(node, "scale")) transform.scale = readScale(*scale);
+    return transform;
+  }
+
+  // SPEC 1 allows uniform scale only; [a, a, a] is accepted as the same thing.
+  double readScale(const Node& node) const {
+    if (!node.value.is_array()) return readNumber(node, above(0));
+    const Vec3 scale = readVec3(node, above(0));
+    if (scale.x != scale.y || scale.x != scale.z) {
+      fail(node, "non-uniform scale is not part of the model (SPEC 1); give one number or three equal ones");
+    }
+    return scale.x;
+  }
+
+  Vec3 readMaterial(const Node& node) const {
+    expectObject(node);
+    checkKeys(node, kMaterialKeys);
+    if (auto albedo = member(node, "albedo")) return readVec3(*albedo, closed(0, 1));
+    return Object{}.albedo;
+  }
+
+  Light readLight(const Node& node, std::size_t index) const {
+    expectObject(node);
+    // Every light key is accepted on every type, so a scene can switch a
+    // light's type without deleting keys; the unused ones are ignored.
+    checkKeys(node, kLightKeys);
+    Light light;
+    light.name = "light" + std::to_string(index);
+    if (auto name = member(node, "name")) light.name = readString(*name);
+    if (auto type = member(node, "type")) light.type = readLightType(*type);
+    if (auto position = member(node, "position")) light.position = readVec3(*position);
+    if (auto direction = member(node, "direction")) light.direction = readDirection(*direction);
+    if (auto range = member(node, "range")) light.range = readNumber(*range, above(0));
+    readSpotAngles(node, light);
+    if (auto color = member(node, "color")) light.color = readVec3(*color, atLeast(0));
+    if (auto intensity = member(node, "intensity")) light.intensity = readNumber(*intensity, atLeast(0));
+    if (auto mode = member(node, "mode")) light.mode = readChoice(*mode, kLightModes);
+    if (auto shadows = member(node, "shadows")) light.shadows = readBool(*shadows);
+    if (auto strength = member(node, "shadow_strength")) light.shadowStrength = readNumber(*strength, closed(0, 1));
+    if (auto falloff = member(node, "bake_falloff")) light.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
+    return light;
+  }
+
+  LightType readLightType(const Node& node) const {
+    if (node.value.is_string() && node.value.get<std::string>() == "area") {
+      fail(node, "area lights are not part of this model yet (baked-only area lights, SPEC 2)");
+    }
+    return readChoice(node, kLightTypes);
+  }
+
+  // SPEC 2: the direction the light travels, stored normalised.
+  Vec3 readDirection(const Node& node) const {
+    const auto unit = unitVector(readVec3(node));
+    if (!unit) fail(node, "direction must not be the zero vector");
+    return *unit;
+  }
+
+  // SPEC 2: the outer angle in (0, 180]; the inner one in [0, outer], optional (3.4).
+  void readSpotAngles(const Node& node, Light& light) const {
+    if (auto outer = member(node, "spot_angle_deg")) light.spotAngleDeg = readNumber(*outer, {0, true, 180, false});
+    if (auto inner = member(node, "inner_spot_angle_deg")) {
+      light.innerSpotAngleDeg = readNumber(*inner, closed(0, light.spotAngleDeg));
+    }
+  }
+
+  Frames readFrames(const Node& node, const Camera& camera) const {
+    expectObject(node);
+    checkKeys(node, kFramesKeys);
+    Frames frames;
+    const auto count = member(node, "count");
+    if (count) frames.count = readInt(*count, 1, kMaxFrames);
+    const auto path = member(node, "camera_path");
+    if (!path) return frames;
+    if (!path->value.is_array()) fail(*path, "expected an array of keyframes, got " + describeType(path->value));
+    if (path->value.size() == 1) {
+      fail(*path, "expected no keyframes (a still camera) or at least 2, got 1");
+    }
+    for (std::size_t k = 0; k < path->value.size(); ++k) {
+      frames.cameraPath.push_back(readKeyframe({path->value[k], path->pointer + "/" + std::to_string(k)}, camera));
+    }
+    // SPEC 2 puts frame f at t = f / (count - 1), undefined for one frame.
+    if (!frames.cameraPath.empty() && frames.count < 2) {
+      fail(count ? *count : *path, "a camera path needs frames.count >= 2, got " + std::to_string(frames.count) +
+                                       (count ? "" : " (the default)"));
+    }
+    return frames;
+  }
+
+  CameraKeyframe readKeyframe(const Node& node, const Camera& camera) const {
+    expectObject(node);
+    checkKeys(node, kKeyframeKeys);
+    for (const std::string_view key : kKeyframeKeys) requireMember(node, key);
+    const Node target = *member(node, "target");
+    CameraKeyframe keyframe{readVec3(*member(node, "position")), readVec3(target)};
+    // Keyframes replace the camera's position and target, so each must make a valid lookAt.
+    if (auto problem = lookAtProblem(keyframe.position, keyframe.target, camera.up)) {
+      fail(target, describe(*problem, camera.up));
+    }
+    return keyframe;
+  }
+
+  Expectation readExpectation(const Node& node) const {
+    expectObject(node);
+    checkKeys(node, kExpectKeys);
+    Expectation expect;
+    if (auto scale = member(node, "tolerance_scale")) expect.toleranceScale = readNumber(*scale, above(0));
+    if (auto pixels = member(node, "max_failing_pixels")) {
+      expect.maxFailingPixels = readInteger(*pixels, 0, kMaxExactInteger);
+    }
+    if (auto expectFail = member(node, "expect_fail")) expect.expectFail = readBool(*expectFail);
+    return expect;
+  }
+
+  std::string_view text_;
+  std::string file_;
+};
+
+// --- parse errors -----------------------------------------------------------
+
+// nlohmann-json messages start "[json.exception.parse_error.101] parse error at
+// line 1, column 8: "; the position is reported separately, so keep the rest.
+std::string stripExceptionPrefix(const std::string& what) {
+  const std::size_t colon = what.find(": ");
+  return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+bool isLiteralChar(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '+'; }
+
+std::string literalAt(std::string_view text, std::size_t start) {
+  std::size_t end = start;
+  while (end < text.size() && isLiteralChar(text[end])) ++end;
+  return std::string(text.substr(start, end - start));
+}
+
+// The start of a NaN or Infinity literal around `offset` (where the parser
+// gave up), or nullopt. Such text is a common way to write a non-finite
+// number, and deserves a clearer message than "invalid literal".
+std::optional<std::size_t> nonFiniteLiteralStart(std::string_view text, std::size_t offset) {
+  std::size_t start = std::min(offset, text.size());
+  while (start > 0 && isLiteralChar(text[start - 1])) --start;
+  if (start > 0 && text[start - 1] == '"') return std::nullopt;  // inside an unterminated string
+  std::size_t letters = start;
+  while (letters < text.size() && (text[letters] == '-' || text[letters] == '+')) ++letters;
+  std::string word;
+  for (std::size_t i = letters; i < text.size() && word.size() < 3; ++i) {
+    word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
+  }
+  if (word == "nan" || word == "inf") return start;
+  return std::nullopt;
+}
+
+// nlohmann-json 3.11 refuses a number that overflows a double (1e999) with
+// out_of_range.406, which carries no position; find the number in the text.
+std::optional<JsonValueSpan> findOverflowingNumber(std::string_view text) {
+  for (JsonValueSpan& span : scanJsonValues(text)) {
+    const char first = text[span.valueOffset];
+    if (first != '-' && !std::isdigit(static_cast<unsigned char>(first))) continue;
+    const std::string number(text.substr(span.valueOffset, span.valueLength));
+    if (std::isinf(std::strtod(number.c_str(), nullptr))) return std::move(span);
+  }
+  return std::nullopt;
+}
+
+constexpr std::string_view kNonFiniteMessage = "non-finite numbers (NaN, Infinity) are not allowed in a scene";
+
+Json parseJson(std::string_view text, const std::string& file) {
+  try {
+    return Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& error) {
+    // `byte` is the 1-based index of the last character read.
+    const std::size_t offset = error.byte > 0 ? error.byte - 1 : 0;
+    if (auto start = nonFiniteLiteralStart(text, offset)) {
+      throwSceneError(file, "", textPositionAt(text, *start),
+                      std::string(kNonFiniteMessage) + "; found '" + literalAt(text, *start) + "'");
+    }
+    throwSceneError(file, "", textPositionAt(text, offset), "invalid JSON: " + stripExceptionPrefix(error.what()));
+  } catch (const Json::exception& error) {
+    if (auto number = findOverflowingNumber(text)) {
+      throwSceneError(file, number->pointer, textPositionAt(text, number->valueOffset),
+                      std::string(kNonFiniteMessage) + "; " +
+                          std::string(text.substr(number->valueOffset, number->valueLength)) +
+                          " is too large for a double");
+    }
+    throwSceneError(file, "", {}, "invalid JSON: " + stripExceptionPrefix(error.what()));
+  }
+}
+
+// RFC 8259 leaves repeated keys to the parser, and nlohmann-json keeps the
+// last one silently; a scene that says "range" twice is ambiguous, so it is an
+// error. This is the one check that scans the text of every scene.
+void rejectDuplicateKeys(std::string_view text, const std::string& file) {
+  const std::vector<JsonValueSpan> spans = scanJsonValues(text);
+  std::unordered_set<std::string_view> seen;  // views into `spans`
+  for (const JsonValueSpan& span : spans) {
+    if (span.keyOffset == std::string_view::npos || seen.insert(span.pointer).second) continue;
+    const std::string_view escapedKey = std::string_view(span.pointer).substr(span.pointer.rfind('/') + 1);
+    throwSceneError(file, span.pointer, textPositionAt(text, span.keyOffset),
+                    "duplicate key '" + unescapeJsonPointerToken(escapedKey) + "'; each key may appear once");
+  }
+}
+
+}  // namespace
+
+Scene loadSceneText(std::string_view text, const std::string& sourceName) {
+  const Json document = parseJson(text, sourceName);
+  rejectDuplicateKeys(text, sourceName);
+  Scene scene = SceneReader(text, sourceName).readScene(document);
+  scene.sourcePath = sourceName;
+  return scene;
+}
+
+Scene loadSceneFile(const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throwSceneError(path, "", {}, "cannot read the scene file: it is a directory");
+  }
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const std::string reason = errno != 0 ? std::string(" (") + std::strerror(errno) + ")" : "";
+    throwSceneError(path, "", {}, "cannot open the scene file" + reason);
+  }
+  std::ostringstream content;
+  content << in.rdbuf();
+  if (in.bad()) throwSceneError(path, "", {}, "cannot read the scene file");
+  return loadSceneText(content.str(), path);
+}
+
+}  // namespace lighting

@@ -1,0 +1,29 @@
+// Shadow-mask channel assignment (SPEC 5.3): at bake time, independent of the
+// camera. Mixed lights with shadows each need one of the four channels of the
+// shadow mask; a light that overlaps four earlier holders is demoted (baked,
+// never lit in real time).
+#pragma once
+
+#include "lighting/scene.h"
+
+#include <vector>
+
+namespace lighting {
+
+constexpr int kShadowMaskChannels = 4;
+
+struct ShadowMaskEntry {
+  int light = -1;    // index in scene.lights
+  int channel = -1;  // 0..3, or -1 when demoted
+  bool demoted = false;
+};
+
+struct ShadowMaskAssignment {
+  std::vector<ShadowMaskEntry> entries;  // the candidates, in SPEC 5.3 order
+  std::vector<int> channelOfLight;       // per scene light: its channel, or -1
+  std::vector<bool> demotedLight;        // per scene light
+};
+
+ShadowMaskAssignment assignShadowMaskChannels(const Scene& scene);
+
+}  // namespace lighting

@@ -1,0 +1,82 @@
+#include "reference/light_evaluation.h"
+
+#include "reference/tolerance_model.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace reference {
+
+using namespace lighting;
+namespace tol = tolerance;
+
+LightEvaluator::LightEvaluator(const Scene& scene, Profile profile) {
+  lights_.reserve(scene.lights.size());
+  for (const Light& l : scene.lights) {
+    Prepared p;
+    p.directional = l.type == LightType::Directional;
+    p.finalColor = l.finalColor();
+    p.position = l.position;
+    p.towardLight = -l.direction;
+    p.spotDirection = -l.direction;  // spotDir points back toward the light (SPEC 3.2)
+    p.invRangeSq = inverseRangeSquared(l.range);
+    p.spot = lightSpotFactors(l, profile);
+    lights_.push_back(p);
+  }
+}
+
+void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
+                                const PositionContext& where, LightSum& sum) const {
+  const double u = tol::kUnitRoundoff;
+  const double pointMagnitude = glm::length(p - where.camera) + where.objectExtent;
+  Vec3 absoluteSum(0.0);
+  for (int index : lights) {
+    const Prepared& light = lights_[index];
+    ++sum.evaluations;
+    if (light.directional) {
+      // SPEC 3.1: A * finalColor * saturate(dot(N, L)) * shadowMask.
+      const double nl = saturate(glm::dot(N, light.towardLight));
+      const Vec3 term = light.finalColor * (nl * light.shadowMask);
+      sum.value += term;
+      absoluteSum += term;
+      sum.errorBound += term * (tol::kRoundingStepsPerLightTerm * u) +
+                        light.finalColor * (light.shadowMask * tol::kUnitDotAbsError);
+      continue;
+    }
+    // SPEC 3.2.
+    const Vec3 ray = light.position - p;
+    const double distSqr = std::max(glm::dot(ray, ray), kMinDistanceSquared);
+    const Vec3 L = ray * (1.0 / std::sqrt(distSqr));
+    const double nl = saturate(glm::dot(N, L));
+    const double q = distSqr * light.invRangeSq;
+    const double g = saturate(1.0 - q * q);
+    const double rangeAtt = g * g;
+    const double s = saturate(glm::dot(light.spotDirection, L) * light.spot.a + light.spot.b);
+    const double spotAtt = s * s;
+    const double falloff = light.shadowMask * rangeAtt / distSqr;
+    const Vec3 term = light.finalColor * (nl * spotAtt * falloff);
+    sum.value += term;
+    absoluteSum += term;
+
+    // First-order error of the same formula in float32 (docs/tolerances.md):
+    // the ray is off by the position error of both ends; that turns L by up
+    // to rayError/d and changes distSqr by 2 rayError/d relative.
+    const double distance = std::sqrt(distSqr);
+    const double rayError = tol::kPositionRoundingSteps * u *
+                            (pointMagnitude + glm::length(light.position - where.camera));
+    const double directionError = std::min(1.0, tol::kUnitDotAbsError + rayError / distance);
+    const double distSqrRelError = tol::kRoundingStepsPerLightTerm * u + std::min(1.0, 2.0 * rayError / distance);
+    const double baseMagnitude = light.shadowMask * rangeAtt / distSqr;
+    const double fromChain = nl * spotAtt * baseMagnitude * distSqrRelError;
+    const double fromNdotL = spotAtt * baseMagnitude * directionError;
+    const double fromSpot = nl * baseMagnitude * 2.0 * s * std::abs(light.spot.a) * directionError;
+    const double fromRange = nl * spotAtt * light.shadowMask / distSqr * 4.0 * g * q * q * distSqrRelError;
+    sum.errorBound += light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange);
+  }
+  // The running sum rounds once per added term.
+  sum.errorBound += absoluteSum * (double(lights.size()) * u);
+}
+
+}  // namespace reference

@@ -1,0 +1,241 @@
+#include "reference/reference_renderer.h"
+
+#include "reference/light_evaluation.h"
+#include "reference/parallel_rows.h"
+#include "reference/tolerance_model.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <optional>
+
+namespace reference {
+
+using namespace lighting;
+namespace tol = tolerance;
+
+namespace {
+
+// What a pixel centre sees: an object's smooth piece, or the background.
+struct SurfaceKey {
+  int object = -1;
+  int piece = 0;
+  bool operator==(const SurfaceKey&) const = default;
+};
+
+struct Shaded {
+  Vec3 value{0.0};
+  Vec3 bound{0.0};
+  int evaluations = 0;
+};
+
+// Everything about a frame that does not change from pixel to pixel.
+struct FrameShading {
+  const Frame& frame;
+  const WorldTriangles& world;
+  const Bvh& bvh;
+  LightEvaluator evaluator;
+  std::vector<ObjectLights> lights;       // per object
+  std::vector<PositionContext> contexts;  // per object
+  std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
+  std::vector<Vec3> vertexBound;
+
+  FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, bool ideal)
+      : frame(f), world(w), bvh(b), evaluator(f.scene(), f.scene().pipeline.profile) {
+    const auto& objects = f.prepared->objects;
+    for (int o = 0; o < int(objects.size()); ++o) {
+      lights.push_back(ideal ? f.idealLightsForObject() : f.lightsForObject(o));
+      const BoundingSphere& bounds = objects[o].bounds;
+      contexts.push_back({f.view.camera.position, glm::length(bounds.centre - f.view.camera.position) + bounds.radius});
+    }
+    // Vertex lights are evaluated at the vertices with the rotated, normalised
+    // vertex normal, then interpolated with the hit's barycentrics.
+    vertexValue.assign(w.vertices.size(), Vec3(0.0));
+    vertexBound.assign(w.vertices.size(), Vec3(0.0));
+    for (std::size_t v = 0; v < w.vertices.size(); ++v) {
+      const WorldVertex& vertex = w.vertices[v];
+      const std::vector<int>& perVertex = lights[vertex.object].perVertex;
+      if (perVertex.empty()) continue;
+      LightSum sum;
+      evaluator.accumulate(perVertex, vertex.position, vertex.normal, contexts[vertex.object], sum);
+      vertexValue[v] = sum.value;
+      vertexBound[v] = sum.errorBound;
+    }
+  }
+
+  // Clipping range along a ray: view depth in [near, far].
+  void depthRange(const Ray& ray, double& tMin, double& tMax) const {
+    const double cosine = glm::dot(ray.direction, frame.view.forward);
+    tMin = frame.view.camera.nearPlane / cosine;
+    tMax = frame.view.camera.farPlane / cosine;
+  }
+
+  std::optional<RayHit> trace(const Ray& ray) const {
+    double tMin, tMax;
+    depthRange(ray, tMin, tMax);
+    return bvh.nearestHit(ray, tMin, tMax);
+  }
+
+  SurfaceKey keyOf(const std::optional<RayHit>& hit) const {
+    if (!hit) return {};
+    const WorldTriangle& t = world.triangles[hit->triangle];
+    return {t.object, t.piece};
+  }
+
+  Shaded shade(const RayHit& hit) const {
+    const WorldTriangle& tri = world.triangles[hit.triangle];
+    const double b0 = 1.0 - hit.b1 - hit.b2;
+    const Vec3 p = b0 * tri.p0 + hit.b1 * tri.p1 + hit.b2 * tri.p2;
+    const Vec3& n0 = world.vertices[tri.vertex[0]].normal;
+    const Vec3& n1 = world.vertices[tri.vertex[1]].normal;
+    const Vec3& n2 = world.vertices[tri.vertex[2]].normal;
+    const Vec3 N = glm::normalize(b0 * n0 + hit.b1 * n1 + hit.b2 * n2);
+
+    LightSum sum;
+    evaluator.accumulate(lights[tri.object].perPixel, p, N, contexts[tri.object], sum);
+    if (!lights[tri.object].perVertex.empty()) {
+      sum.value += b0 * vertexValue[tri.vertex[0]] + hit.b1 * vertexValue[tri.vertex[1]] +
+                   hit.b2 * vertexValue[tri.vertex[2]];
+      sum.errorBound += b0 * vertexBound[tri.vertex[0]] + hit.b1 * vertexBound[tri.vertex[1]] +
+                        hit.b2 * vertexBound[tri.vertex[2]];
+    }
+    const Scene& scene = frame.scene();
+    const Vec3& albedo = scene.objects[tri.object].albedo;
+    // SPEC 3: colour = A * ambient + A * lightmap(p) + the light sums.
+    // Lightmaps arrive with the baker; until then the term is 0.
+    Shaded shaded;
+    shaded.value = albedo * (scene.ambient + sum.value);
+    shaded.bound = albedo * sum.errorBound + glm::abs(shaded.value) * (tol::kFinalCombineSteps * tol::kUnitRoundoff);
+    shaded.evaluations = sum.evaluations;
+    return shaded;
+  }
+
+  // Depth-buffer resolution in view depth at depth z (SPEC 7: D32F, LESS).
+  double depthResolution(double z, const Vec3& p) const {
+    const Camera& c = frame.view.camera;
+    const double storedUlp = tol::kDepthTieUlps * tol::kUnitRoundoff;
+    const double fromBuffer = c.projection == Projection::Perspective
+                                  ? storedUlp * z * z * (c.farPlane - c.nearPlane) / (c.farPlane * c.nearPlane)
+                                  : storedUlp * (c.farPlane - c.nearPlane);
+    const double fromPosition = tol::kPositionRoundingSteps * tol::kUnitRoundoff * glm::length(p - c.position);
+    return fromBuffer + fromPosition;
+  }
+
+  // True when another surface lies within depth precision of the hit, or the
+  // hit lies within it of the near or far plane: either may win on a GPU.
+  bool depthIsAmbiguous(const Ray& ray, const RayHit& hit) const {
+    const WorldTriangle& tri = world.triangles[hit.triangle];
+    const Vec3 p = ray.origin + hit.t * ray.direction;
+    const double cosine = glm::dot(ray.direction, frame.view.forward);
+    const double z = hit.t * cosine;
+    const double dz = depthResolution(z, p);
+    const Camera& c = frame.view.camera;
+    if (z - c.nearPlane <= dz || c.farPlane - z <= dz) return true;
+    double tMin, tMax;
+    depthRange(ray, tMin, tMax);
+    HitFilter other;
+    other.excludeObject = tri.object;
+    other.excludePiece = tri.piece;
+    return bvh.nearestHit(ray, tMin, hit.t + dz / cosine, other).has_value();
+  }
+};
+
+constexpr int kEdgeProbes = 8;
+
+}  // namespace
+
+ReferenceRenderer::ReferenceRenderer(std::shared_ptr<const PreparedScene> prepared)
+    : prepared_(std::move(prepared)), world_(buildWorldTriangles(*prepared_)), bvh_(world_) {}
+
+ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOptions& options) const {
+  const int width = frame.view.width, height = frame.view.height;
+  const FrameShading shading(frame, world_, bvh_, options.ideal);
+  const double toleranceScale = frame.scene().expect.toleranceScale;
+
+  // Pass 1: what each pixel centre sees; pass 2 needs the neighbours' answers
+  // to find pixels near a change of surface.
+  std::vector<std::optional<RayHit>> hits(std::size_t(width) * height);
+  std::vector<SurfaceKey> keys(hits.size());
+  forEachRow(height, options.threads, [&](int j) {
+    for (int i = 0; i < width; ++i) {
+      const std::size_t k = std::size_t(j) * width + i;
+      hits[k] = shading.trace(frame.view.rayThroughPixel(i + 0.5, j + 0.5));
+      keys[k] = shading.keyOf(hits[k]);
+    }
+  });
+
+  ReferenceImages out;
+  out.value = imaging::Image(width, height, 4);
+  out.tolerance = imaging::Image(width, height, 3);
+  std::atomic<std::int64_t> evaluations{0}, masked{0};
+
+  forEachRow(height, options.threads, [&](int j) {
+    std::int64_t rowEvaluations = 0, rowMasked = 0;
+    for (int i = 0; i < width; ++i) {
+      const std::size_t k = std::size_t(j) * width + i;
+      const double cx = i + 0.5, cy = j + 0.5;
+      const SurfaceKey key = keys[k];
+      bool compared = true;
+
+      // Near a change of surface? Probe a ring of kEdgeDistancePx only where a
+      // neighbour sees something else; elsewhere no edge can be that close
+      // short of a feature thinner than a pixel.
+      bool neighbourDiffers = false;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di) {
+          const int ni = i + di, nj = j + dj;
+          if (ni >= 0 && nj >= 0 && ni < width && nj < height && !(keys[std::size_t(nj) * width + ni] == key))
+            neighbourDiffers = true;
+        }
+      if (neighbourDiffers) {
+        for (int p = 0; p < kEdgeProbes && compared; ++p) {
+          const double angle = 2.0 * 3.14159265358979323846 * p / kEdgeProbes;
+          const Ray probe = frame.view.rayThroughPixel(cx + tol::kEdgeDistancePx * std::cos(angle),
+                                                       cy + tol::kEdgeDistancePx * std::sin(angle));
+          if (!(shading.keyOf(shading.trace(probe)) == key)) compared = false;
+        }
+      }
+
+      Vec3 value(0.0), tolerance(tol::kFlushToZeroFloor);
+      if (hits[k]) {
+        const Ray ray = frame.view.rayThroughPixel(cx, cy);
+        if (shading.depthIsAmbiguous(ray, *hits[k])) compared = false;
+        const Shaded centre = shading.shade(*hits[k]);
+        rowEvaluations += centre.evaluations;
+        value = centre.value;
+        // Sub-pixel shifts: the largest change of the shaded value.
+        Vec3 shiftChange(0.0);
+        const double shifts[4][2] = {{tol::kSubpixelShiftPx, 0}, {-tol::kSubpixelShiftPx, 0},
+                                     {0, tol::kSubpixelShiftPx}, {0, -tol::kSubpixelShiftPx}};
+        for (const auto& s : shifts) {
+          const auto shiftedHit = shading.trace(frame.view.rayThroughPixel(cx + s[0], cy + s[1]));
+          if (!(shading.keyOf(shiftedHit) == key)) {
+            compared = false;
+            continue;
+          }
+          const Shaded shifted = shading.shade(*shiftedHit);
+          rowEvaluations += shifted.evaluations;
+          shiftChange = glm::max(shiftChange, glm::abs(shifted.value - value));
+        }
+        tolerance += centre.bound + shiftChange +
+                     glm::abs(value) * (tol::kStorageRoundingSteps * tol::kUnitRoundoff);
+      }
+      tolerance *= toleranceScale;
+      for (int c = 0; c < 3; ++c) {
+        out.value.at(i, j, c) = float(value[c]);
+        out.tolerance.at(i, j, c) = float(tolerance[c]);
+      }
+      out.value.at(i, j, 3) = compared ? 1.0f : 0.0f;
+      rowMasked += compared ? 0 : 1;
+    }
+    evaluations += rowEvaluations;
+    masked += rowMasked;
+  });
+  out.lightEvaluations = evaluations;
+  out.maskedPixels = masked;
+  return out;
+}
+
+}  // namespace reference

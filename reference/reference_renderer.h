@@ -1,0 +1,41 @@
+// The double-precision reference (SPEC 6): one ray through every pixel centre
+// against the same triangles the backends draw, the model of SPEC 3 and 4
+// evaluated exactly at the nearest front-facing hit, a per-pixel tolerance
+// (tolerance_model.h) and a mask of don't-care pixels.
+#pragma once
+
+#include "imaging/image.h"
+#include "lighting/frame.h"
+#include "reference/bvh.h"
+#include "reference/world_triangles.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace reference {
+
+struct ReferenceOptions {
+  bool ideal = false;  // SPEC 6 `--ideal`: every non-baked light per pixel, no budgets
+  int threads = 0;     // 0: every hardware thread
+};
+
+struct ReferenceImages {
+  imaging::Image value;      // RGBA: RGB value, A mask (1 compared, 0 don't care)
+  imaging::Image tolerance;  // RGB
+  std::int64_t lightEvaluations = 0;  // pixel-light evaluations, tolerance shading included
+  std::int64_t maskedPixels = 0;
+};
+
+// Built once per scene (world triangles and BVH), then renders any frame of it.
+class ReferenceRenderer {
+ public:
+  explicit ReferenceRenderer(std::shared_ptr<const lighting::PreparedScene> prepared);
+  ReferenceImages render(const lighting::Frame& frame, const ReferenceOptions& options = {}) const;
+
+ private:
+  std::shared_ptr<const lighting::PreparedScene> prepared_;
+  WorldTriangles world_;
+  Bvh bvh_;
+};
+
+}  // namespace reference

@@ -1,0 +1,60 @@
+// The named constants of the tolerance model (SPEC 7). docs/tolerances.md
+// derives each one; a constant changes only together with that document.
+//
+// A pixel's tolerance is the largest difference a correct float32
+// implementation of SPEC 3 may show against the double-precision value:
+//
+//   tolerance = tolerance_scale * ( albedo * arithmetic bound of the light sum
+//                                   + largest change over sub-pixel shifts
+//                                   + storage rounding of the result
+//                                   + flush-to-zero floor )
+#pragma once
+
+namespace reference::tolerance {
+
+// float32 unit roundoff: a correctly rounded operation is off by at most u relative.
+constexpr double kUnitRoundoff = 0x1p-24;
+
+// Rounding steps on the longest chain of one light term (ray, dot, max,
+// inversesqrt at 2 ULP, products, saturate, square, divide at 2.5 ULP), each
+// counted at its GLSL/Vulkan precision and rounded up.
+constexpr double kRoundingStepsPerLightTerm = 16;
+
+// Absolute error of a dot product of two unit vectors that were each
+// normalised in float32 (normalize: inversesqrt 2 ULP + 3 products; dot: 5 ops).
+constexpr double kUnitDotAbsError = 8 * kUnitRoundoff;
+
+// Position error of a camera-relative implementation, in units of u times the
+// magnitudes involved (|p - camera|, |object centre - camera| + radius for the
+// model transform, |light - camera| for the light's uploaded position):
+// transform (3 products + 3 sums) + interpolation (3 ops), rounded up.
+constexpr double kPositionRoundingSteps = 8;
+
+// Vertices snap to the sub-pixel grid: Vulkan guarantees subPixelPrecisionBits
+// >= 4, so a vertex moves by up to half of 1/16 pixel, and so does the surface
+// point a pixel centre sees. The reference shades the four points a shift of
+// this size away and takes the largest change.
+constexpr double kSubpixelShiftPx = 1.0 / 32.0;
+
+// Pixel centres closer than this to a change of surface (silhouette, object or
+// box-face boundary) may go to either side under the snapping above plus the
+// tie-breaking rule: masked as don't care. Twice the shift, for margin.
+constexpr double kEdgeDistancePx = 1.0 / 16.0;
+
+// Two surfaces closer in depth than this many D32F ULPs of the stored depth
+// (plus the position error above) may win the LESS test either way: masked.
+// Also applied to the near and far clipping planes.
+constexpr double kDepthTieUlps = 8;
+
+// RGBA32F colour attachment: one rounding of the final value.
+constexpr double kStorageRoundingSteps = 1;
+
+// Summing n light terms adds up to n roundings of the running sum; the final
+// albedo product and ambient add two more.
+constexpr double kFinalCombineSteps = 2;
+
+// GPUs may flush denormals to zero (Vulkan allows it for 32-bit floats): any
+// value below the smallest normal float may read as 0.
+constexpr double kFlushToZeroFloor = 0x1p-126;
+
+}  // namespace reference::tolerance
