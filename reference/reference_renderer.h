@@ -31,6 +31,7 @@ class ReferenceRenderer {
  public:
   explicit ReferenceRenderer(std::shared_ptr<const lighting::PreparedScene> prepared);
   ReferenceImages render(const lighting::Frame& frame, const ReferenceOptions& options = {}) const;
+  std::size_t triangleCount() const { return world_.triangles.size(); }
 
  private:
   std::shared_ptr<const lighting::PreparedScene> prepared_;

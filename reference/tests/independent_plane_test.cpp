@@ -178,7 +178,7 @@ std::optional<Vec> hitPlane(const SceneSpec& s, const CameraRay& ray) {
   if (!(ray.direction.y < 0.0) || !(ray.origin.y > p.centre.y)) return std::nullopt;
   const double t = (p.centre.y - ray.origin.y) / ray.direction.y;
   Vec hit = ray.origin + t * ray.direction;
-  hit.y = p.centre.y;
+  hit.y = p.centre.y;  // exactly on the plane, as the mesh vertices are
   if (std::abs(hit.x - p.centre.x) > p.sizeX / 2 || std::abs(hit.z - p.centre.z) > p.sizeZ / 2) return std::nullopt;
   const double depth = t * glm::dot(ray.direction, lookAtBasis(s.camera).forward);
   if (depth < s.camera.nearPlane || depth > s.camera.farPlane) return std::nullopt;
@@ -520,6 +520,7 @@ TEST(IndependentPlane, OrthographicPointSpotsAndGrazingDirectional) {
   EXPECT_GT(r.lit, s.width * s.height / 3);
 }
 
+// Case 2: see perspectiveScene for the lights and why all of them apply.
 TEST(IndependentPlane, PerspectivePointAndSpotLights) {
   const SceneSpec s = perspectiveScene(Vec(0.0));
   const ComparisonResult r = checkScene(s, {allLightNames(s), {}});

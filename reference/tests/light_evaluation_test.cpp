@@ -1,1 +1,110 @@
+// The double evaluation of SPEC 3.1-3.2 at hand-derived points, and the shape
+// of its error bound.
+#include "reference/light_evaluation.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace reference {
+namespace {
+
+using namespace lighting;
+
+Scene oneLight(Light light) {
+  Scene s;
+  s.lights.push_back(light);
+  return s;
+}
+
+Light point(Vec3 position, double range, Vec3 color = {1, 1, 1}, double intensity = 1) {
+  Light l;
+  l.type = LightType::Point;
+  l.position = position;
+  l.range = range;
+  l.color = color;
+  l.intensity = intensity;
+  return l;
+}
+
+LightSum evaluate(const Scene& s, Vec3 p, Vec3 n) {
+  LightEvaluator e(s, s.pipeline.profile);
+  LightSum sum;
+  e.accumulate({0}, p, n, PositionContext{{0, 10, 0}, 10}, sum);
+  return sum;
+}
+
+TEST(LightEvaluation, PointLightStraightAbove) {
+  // d = 1, range 2: rangeAtt = (1 - (1/4)^2)^2 = (15/16)^2; N.L = 1; / d^2 = 1.
+  const Scene s = oneLight(point({0, 1, 0}, 2, {1, 0.5, 0.25}, 2));
+  const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
+  EXPECT_DOUBLE_EQ(sum.value.r, 2 * 0.87890625);
+  EXPECT_DOUBLE_EQ(sum.value.g, 1 * 0.87890625);
+  EXPECT_DOUBLE_EQ(sum.value.b, 0.5 * 0.87890625);
+  EXPECT_EQ(sum.evaluations, 1);
+}
+
+TEST(LightEvaluation, PointLightAtFortyFiveDegrees) {
+  // Light at (1, 1, 0): d^2 = 2, N.L = 1/sqrt2, range 10: q = 2/100.
+  const Scene s = oneLight(point({1, 1, 0}, 10));
+  const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
+  const double rangeAtt = std::pow(1 - 0.02 * 0.02, 2);
+  EXPECT_NEAR(sum.value.r, rangeAtt / std::sqrt(2.0) / 2.0, 1e-15);
+}
+
+TEST(LightEvaluation, LightOnTheSurfacePointGivesZeroNotNaN) {
+  // d = 0: distSqr clamps to 1e-5, L = 0, so saturate(dot(N, L)) = 0.
+  const Scene s = oneLight(point({3, 0, 4}, 5));
+  const LightSum sum = evaluate(s, {3, 0, 4}, {0, 1, 0});
+  EXPECT_EQ(sum.value, Vec3(0.0));
+  EXPECT_TRUE(std::isfinite(sum.errorBound.r));
+}
+
+TEST(LightEvaluation, SpotConeEdges) {
+  // Spot straight down from height 1, outer 90 inner 0: a = 2 + sqrt2,
+  // b = -(1 + sqrt2). Directly below: cos = 1 -> factor 1. At 45 degrees off
+  // axis (the outer edge): 0.
+  Light spot = point({0, 1, 0}, 100);
+  spot.type = LightType::Spot;
+  spot.direction = {0, -1, 0};
+  spot.spotAngleDeg = 90;
+  spot.innerSpotAngleDeg = 0;
+  const Scene s = oneLight(spot);
+  const double below = evaluate(s, {0, 0, 0}, {0, 1, 0}).value.r;
+  EXPECT_NEAR(below, std::pow(1 - 1e-8, 2), 1e-15);
+  EXPECT_NEAR(evaluate(s, {1, 0, 0}, {0, 1, 0}).value.r, 0.0, 1e-15);
+  // Halfway in cosine between the edges: cos = (1 + 1/sqrt2)/2 -> factor 1/4.
+  const double c = (1 + 1 / std::sqrt(2.0)) / 2, x = std::sqrt(1 - c * c) / c;  // tan of that angle
+  const double d2 = 1 + x * x;
+  const double expected = 0.25 * c * std::pow(1 - (d2 / 1e4) * (d2 / 1e4), 2) / d2;
+  EXPECT_NEAR(evaluate(s, {x, 0, 0}, {0, 1, 0}).value.r, expected, 1e-12);
+}
+
+TEST(LightEvaluation, DirectionalIsNDotLTimesColour) {
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = {0, -0.6, -0.8};  // L = (0, 0.6, 0.8)
+  sun.intensity = 3;
+  const Scene s = oneLight(sun);
+  EXPECT_NEAR(evaluate(s, {5, 0, 5}, {0, 1, 0}).value.g, 3 * 0.6, 1e-15);
+  EXPECT_EQ(evaluate(s, {5, 0, 5}, {0, -1, 0}).value.g, 0.0);  // facing away: saturate clamps
+}
+
+TEST(LightEvaluation, ErrorBoundIsSmallRelativeWhereTheLightIsBenign) {
+  const Scene s = oneLight(point({0, 1, 0}, 4));
+  const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
+  EXPECT_GT(sum.errorBound.r, 0.0);
+  EXPECT_LT(sum.errorBound.r, 1e-4 * sum.value.r);
+}
+
+TEST(LightEvaluation, ErrorBoundGrowsForALightInTheSurface) {
+  // Light in the plane 0.05 away: exact N.L = 0, but float32 positions can
+  // tilt L out of the plane; the bound must allow for it.
+  const Scene s = oneLight(point({0.05, 0, 0}, 4));
+  const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
+  EXPECT_EQ(sum.value.r, 0.0);
+  EXPECT_GT(sum.errorBound.r, 1e-6);
+}
+
+}  // namespace
+}  // namespace reference
