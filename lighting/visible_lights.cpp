@@ -8,20 +8,21 @@
 
 namespace lighting {
 
-bool isLightVisible(const Light& light, const CameraView& view) {
+bool isLightVisible(const Light& light, const std::array<FrustumPlane, 6>& frustum) {
   if (light.type == LightType::Directional) return true;
-  for (const FrustumPlane& plane : view.frustumPlanes())
+  for (const FrustumPlane& plane : frustum)
     if (plane.signedDistance(light.position) < -light.range) return false;
   return true;
 }
 
 LightSelection selectVisibleLights(const Scene& scene, const CameraView& view,
                                    const ShadowMaskAssignment& shadowMask) {
+  const std::array<FrustumPlane, 6> frustum = view.frustumPlanes();
   std::vector<int> directional, other;
   for (int i = 0; i < int(scene.lights.size()); ++i) {
     const Light& l = scene.lights[i];
     if (l.mode == LightMode::Baked || shadowMask.demotedLight[i]) continue;
-    if (!isLightVisible(l, view)) continue;
+    if (!isLightVisible(l, frustum)) continue;
     (l.type == LightType::Directional ? directional : other).push_back(i);
   }
   // Directional by luminance(finalColor) descending; the others by squared

@@ -30,8 +30,9 @@ struct LightSelection {
 };
 
 // True when a point/spot light's range sphere is not fully outside any frustum
-// plane; directional lights are always visible (SPEC 5.1).
-bool isLightVisible(const Light& light, const CameraView& view);
+// plane; directional lights are always visible (SPEC 5.1). The planes come
+// from CameraView::frustumPlanes(), computed once per frame by the caller.
+bool isLightVisible(const Light& light, const std::array<FrustumPlane, 6>& frustum);
 
 // Lights with mode `baked`, and mixed lights demoted by the shadow-mask
 // assignment, take no part.

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 namespace reference {
@@ -191,7 +192,7 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         }
       if (neighbourDiffers) {
         for (int p = 0; p < kEdgeProbes && compared; ++p) {
-          const double angle = 2.0 * 3.14159265358979323846 * p / kEdgeProbes;
+          const double angle = 2.0 * std::numbers::pi * p / kEdgeProbes;
           const Ray probe = frame.view.rayThroughPixel(cx + tol::kEdgeDistancePx * std::cos(angle),
                                                        cy + tol::kEdgeDistancePx * std::sin(angle));
           if (!(shading.keyOf(shading.trace(probe)) == key)) compared = false;
