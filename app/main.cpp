@@ -28,6 +28,10 @@ int main(int argc, char** argv) {
     sub->add_option("--device", backend.device, "Device index or name substring");
     sub->add_option("--driver", backend.driver, "GL backends: llvmpipe | softpipe")
         ->check(CLI::IsMember({"llvmpipe", "softpipe"}));
+    // Test-only (docs/cli.md): never needed to run the suite as shipped.
+    sub->add_option("--mutant", backend.mutant, "Test only: a deliberately wrong variant of the model")
+        ->default_val("none");
+    sub->add_flag("--full-shader", backend.fullShader, "Test only: every shader feature on, whatever the scene uses");
   };
 
   auto* backendsCmd = cli.add_subcommand("backends", "List backends, drivers and devices");
@@ -44,6 +48,9 @@ int main(int argc, char** argv) {
   auto* compareCmd = cli.add_subcommand("compare", "Render and compare against the reference: verdict and metrics");
   addScene(compareCmd, true);
   addBackend(compareCmd);
+  std::string evidenceDir;
+  compareCmd->add_option("--evidence", evidenceDir,
+                         "Folder for the evidence of a failure (default: lightcts-evidence/<group>.<name>.<backend>)");
   auto* runCmd = cli.add_subcommand("run", "Run the whole suite: results.json, junit.xml, report/index.html");
   runCmd->add_option("--backend", suiteBackends, "Backends to run (default: every one present)");
   runCmd->add_option("--scenes", scenesDir, "Scene folder")->default_val("suite/scenes");
@@ -66,7 +73,7 @@ int main(int argc, char** argv) {
   if (*lightsCmd) return app::runLightsCommand(scene, o, e);
   if (*referenceCmd) return app::runReferenceCommand(scene, ideal, out, o, e);
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
-  if (*compareCmd) return app::runCompareCommand(scene, backend, o, e);
+  if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);
   if (*runCmd) return app::runSuiteCommand(suiteBackends, scenesDir, out, o, e);
   return app::kExitBadInput;
 }

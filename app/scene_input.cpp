@@ -1,6 +1,7 @@
 #include "app/scene_input.h"
 
 #include "app/exit_status.h"
+#include "backends/backend.h"
 #include "imaging/image_files.h"
 #include "lighting/scene_loader.h"
 
@@ -34,6 +35,12 @@ int guardCommand(std::ostream& err, const std::function<int()>& body) {
   } catch (const imaging::ImageFileError& e) {
     err << "lightcts: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const backends::NotSupportedError& e) {
+    err << "lightcts: not supported here (NotSupported): " << e.what() << "\n";
+    return kExitNotSupported;
+  } catch (const backends::DriverError& e) {
+    err << "lightcts: driver error: " << e.what() << "\n";
+    return kExitInternalError;
   } catch (const std::exception& e) {
     err << "lightcts: internal error: " << e.what() << "\n";
     return kExitInternalError;

@@ -4,11 +4,13 @@
 // image with row 0 at the top; it never decides which lights count.
 #pragma once
 
+#include "shaders/shader_variant.h"
 #include "imaging/image.h"
 #include "lighting/frame.h"
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,20 @@ namespace backends {
 // The backend names of SPEC 8. A name outside this list is a usage error
 // (exit 2); a name in it that this build or machine lacks is a skip (exit 3).
 const std::vector<std::string>& specBackendNames();
+
+// The backend, driver or device asked for is not here: a skip (exit 3,
+// NotSupported), never a pass.
+class NotSupportedError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The driver failed or reported an error (a validation message, a lost
+// device, a GL error): exit 4.
+class DriverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct DeviceInfo {
   std::string name;
@@ -28,22 +44,43 @@ struct DeviceInfo {
 struct BackendOptions {
   std::string device;  // --device: index or name substring; empty for the default
   std::string driver;  // --driver (GL backends): llvmpipe | softpipe
+  shaders::ShaderVariant variant;
+  // Enable the API's validation (VK_LAYER_KHRONOS_validation) and turn any
+  // message into a DriverError. On in debug builds and when the environment
+  // sets LIGHTCTS_VALIDATION=1 (every ctest run does).
+  bool validation = false;
 };
+
+// Defaults for BackendOptions::validation: debug build or LIGHTCTS_VALIDATION=1.
+bool validationRequestedByDefault();
 
 class Backend {
  public:
   virtual ~Backend() = default;
   virtual DeviceInfo device() const = 0;
-  virtual imaging::Image render(const lighting::Frame& frame) = 0;
+  // Builds (or takes from the on-disk cache) the pipeline `frame` needs.
+  // draw() does this on demand; benchmarks call it first to time it apart.
+  virtual void preparePipeline(const lighting::Frame& frame) = 0;
+  // Draws the frame and waits until the device has finished; no readback.
+  virtual void draw(const lighting::Frame& frame) = 0;
+  // The last drawn image: RGBA float, row 0 at the top, A = 1 where drawn.
+  virtual imaging::Image readback() = 0;
+
+  imaging::Image render(const lighting::Frame& frame) {
+    draw(frame);
+    return readback();
+  }
 };
 
 struct BackendEntry {
   std::string name;
+  // Throws NotSupportedError when the API or driver is absent.
   std::function<std::vector<DeviceInfo>(const BackendOptions&)> listDevices;
+  // Throws NotSupportedError (no such device or driver) or DriverError.
   std::function<std::unique_ptr<Backend>(const BackendOptions&)> create;
 };
 
-// The backends compiled in (none until the Vulkan and OpenGL backends land).
+// The backends compiled into this build.
 const std::vector<BackendEntry>& compiledBackends();
 const BackendEntry* findCompiledBackend(const std::string& name);
 

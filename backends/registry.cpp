@@ -1,5 +1,10 @@
 #include "backends/backend.h"
 
+#include "backends/vulkan/vulkan_backend.h"
+
+#include <cstdlib>
+#include <string_view>
+
 namespace backends {
 
 const std::vector<std::string>& specBackendNames() {
@@ -7,8 +12,17 @@ const std::vector<std::string>& specBackendNames() {
   return names;
 }
 
+bool validationRequestedByDefault() {
+#ifndef NDEBUG
+  return true;
+#else
+  const char* value = std::getenv("LIGHTCTS_VALIDATION");
+  return value && std::string_view(value) == "1";
+#endif
+}
+
 const std::vector<BackendEntry>& compiledBackends() {
-  static const std::vector<BackendEntry> entries;
+  static const std::vector<BackendEntry> entries = {vulkan::vulkanBackendEntry()};
   return entries;
 }
 

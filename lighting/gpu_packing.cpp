@@ -43,7 +43,8 @@ GpuFrameBlock packFrameBlock(const Frame& frame) {
   block.viewProjection = mat4(frame.view.cameraRelativeViewProjection());
   block.ambient = vec4(frame.scene().ambient, 0.0);
   const PackedLights& packed = frame.selection.packed;
-  block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), 0, 0};
+  const bool legacy = frame.scene().pipeline.profile == Profile::Legacy;
+  block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, 0};
   for (std::size_t i = 0; i < packed.directional.size(); ++i)
     block.directionalLights[i] = packLight(frame, packed.directional[i]);
   for (std::size_t i = 0; i < packed.other.size(); ++i)
@@ -70,6 +71,7 @@ GpuObjectBlock packObjectBlock(const Frame& frame, int object) {
   if (!frame.objectLists.empty()) {
     const ObjectLightList& list = frame.objectLists[object];
     block.lightList.x = list.count;
+    block.lightList.w = 1;
     for (int k = 0; k < int(list.indices.size()); ++k) index(k) = list.indices[k];
   }
   if (obj.mesh.type == MeshType::Plane) {

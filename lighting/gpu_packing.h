@@ -45,7 +45,7 @@ constexpr int kGpuMaxOtherLights = 64;
 struct GpuFrameBlock {
   GpuMat4 viewProjection;  // camera-relative world to clip (x right, y up, depth 0..1)
   GpuVec4 ambient;         // rgb
-  GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind)
+  GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind), z: 1 for the legacy profile
   GpuLight directionalLights[kGpuMaxDirectionalLights];
   GpuLight otherLights[kGpuMaxOtherLights];
 };
@@ -56,7 +56,7 @@ struct GpuObjectBlock {
   GpuMat4 model;          // local to camera-relative world: rotation * scale, then translate - camera
   GpuMat4 normalMatrix;   // the rotation R (SPEC 1), upper 3x3 used
   GpuVec4 albedo;         // rgb
-  GpuIVec4 lightList;     // x: list count (may exceed 8), y: lightmap present, z: shadow mask present
+  GpuIVec4 lightList;     // x: list count (may exceed 8), y: lightmap present, z: shadow mask present, w: 1 when the list is in use
   GpuIVec4 lightIndices[2];  // the first min(count, 8) packed indices, -1 past the end
   GpuVec4 lightmapTransform; // u = x_local * x + z, v = z_local * y + w (SPEC 3.6)
 };

@@ -11,6 +11,10 @@ packages=(
   nlohmann-json3-dev libglm-dev libcli11-dev libopenimageio-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # shaders: GLSL -> SPIR-V at build time (glslang), SPIR-V -> GLSL for OpenGL
+  glslang-tools glslang-dev spirv-cross libspirv-cross-c-shared-dev
+  # Vulkan on Mesa's lavapipe, with the validation layers for test runs
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
 )
 
 missing=()

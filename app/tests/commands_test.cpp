@@ -122,10 +122,10 @@ TEST_F(CommandsTest, MissingSceneFileExitsTwo) {
 
 TEST_F(CommandsTest, UnknownBackendExitsTwoAndAbsentBackendIsNotSupported) {
   const std::string scene = writeScene(kSelectionScene);
-  EXPECT_EQ(runCompareCommand({scene, 0}, {"metal", "", ""}, out_, err_), kExitBadInput);
+  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "metal"}, "", out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("unknown backend 'metal'"), std::string::npos);
   // A SPEC backend this build lacks is a skip (3), never a pass (0).
-  EXPECT_EQ(runCompareCommand({scene, 0}, {"gl-osmesa", "", ""}, out_, err_), kExitNotSupported);
+  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "gl-osmesa"}, "", out_, err_), kExitNotSupported);
 }
 
 TEST_F(CommandsTest, UnwritableOutputExitsTwo) {

@@ -77,6 +77,8 @@ TEST(GpuPacking, PositionsAreRelativeToTheCamera) {
   EXPECT_EQ(object.model.m[13], -10.0f);
   EXPECT_EQ(object.model.m[14], 0.0f);
   EXPECT_EQ(object.lightList.x, 0);
+  EXPECT_EQ(object.lightList.w, 0);  // no list in use: the full shader loops over every light
+  EXPECT_EQ(block.lightCounts.z, 0);  // srp
   EXPECT_EQ(object.lightIndices[0].x, -1);
 }
 
@@ -112,6 +114,7 @@ TEST(GpuPacking, ObjectListsAreMinusOnePastTheEnd) {
   const Frame f = prepareFrame(prepareScene(s), 0);
   const GpuObjectBlock block = packObjectBlock(f, 0);
   EXPECT_EQ(block.lightList.x, 2);
+  EXPECT_EQ(block.lightList.w, 1);  // the list is in use
   // Equal camera distance: packed in scene order (a 0, b 1); b is brighter, so first.
   EXPECT_EQ(block.lightIndices[0].x, 1);
   EXPECT_EQ(block.lightIndices[0].y, 0);
@@ -120,4 +123,18 @@ TEST(GpuPacking, ObjectListsAreMinusOnePastTheEnd) {
 }
 
 }  // namespace
+TEST(GpuPacking, LegacyProfileIsFlaggedForTheFullShader) {
+  Scene s;
+  s.pipeline.profile = Profile::Legacy;
+  Object floor;
+  s.objects.push_back(floor);
+  Light a;
+  a.type = LightType::Point;
+  a.position = {1, 1, 0};
+  s.lights = {a};
+  const Frame f = prepareFrame(prepareScene(s), 0);
+  EXPECT_EQ(packFrameBlock(f).lightCounts.z, 1);
+  EXPECT_EQ(packObjectBlock(f, 0).lightList.w, 1);  // legacy always uses lists (SPEC 4)
+}
+
 }  // namespace lighting

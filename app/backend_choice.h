@@ -1,0 +1,26 @@
+// Turning --backend, --device, --driver and the test-only shader options into
+// a running backend. Unknown names are usage errors (exit 2); a SPEC backend
+// this build or machine lacks is a skip (exit 3), never a pass.
+#pragma once
+
+#include "app/commands.h"
+#include "backends/backend.h"
+
+#include <memory>
+#include <ostream>
+
+namespace app {
+
+// Null with `status` set (and a message on `err`) when the name is unknown
+// or not built.
+const backends::BackendEntry* resolveBackend(const std::string& name, std::ostream& err, int& status);
+
+// The options a command's arguments ask for. Throws InputError for an
+// unknown mutant.
+backends::BackendOptions backendOptions(const BackendArguments& args);
+
+// The test's name for this scene and backend: <group>.<name>.<backend> (SPEC 10),
+// with the group the scene file's folder.
+std::string caseName(const std::string& scenePath, const BackendArguments& args);
+
+}  // namespace app

@@ -1,0 +1,240 @@
+// Every backend that this build and machine can create against the independent
+// double-precision evaluation of SPEC 1 and 3 on plane scenes
+// (testing/independent_plane), to 1e-3 relative, with no NaN or infinity in
+// any channel of any pixel. The scenes are the six of the reference's
+// independent test (reference/tests/independent_plane_test.cpp) that a backend
+// draws (not --ideal): orthographic, perspective, perspective far from the
+// origin (1e5), a light on the surface, per-object truncation and legacy
+// vertex lights. Each is written out as SPEC 2 JSON to a file, loaded with the
+// project's loader, prepared (SPEC 5) and rendered as `lightcts render` does
+// (the shipped, specialised shader), with validation on so that any layer
+// message fails the render.
+//
+// Per pixel:
+//  - all four channels are finite and A == 1 (the backends clear A to 1 and
+//    write 1 where they draw), background and edge pixels included;
+//  - pixels whose centre lies within kEdgeDistancePx = 1/16 pixel of the
+//    plane's edge in the image (independent_plane::nearPlaneEdge: the same
+//    distance the reference masks as don't care, SPEC 6, because vertex
+//    snapping to the 1/16-pixel grid may move the edge by 1/32 pixel) are not
+//    compared further: either side of the edge is a correct result;
+//  - background (the ray misses the plane): RGB exactly 0;
+//  - on the plane: |rendered - expected| <= 1e-3 * |expected| + floor per RGB
+//    channel, floor as derived at kAbsoluteFloorUlps below.
+#include "backends/backend.h"
+#include "lighting/frame.h"
+#include "lighting/scene_loader.h"
+#include "testing/independent_plane/independent_plane_model.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace independent_plane;
+
+// The acceptance bound of the issue: 1e-3 relative per channel.
+constexpr double kRelativeTolerance = 1e-3;
+
+// The absolute floor, in float32 unit roundoffs (u = 2^-24) of the pixel's
+// largest single light contribution (albedo * one light's term, its largest
+// channel). A correct float32 implementation rounds that term, the running sum
+// it is added to and the albedo product each to the nearest float, so its
+// result may carry a few u of the largest term it summed whatever the exact
+// value of the channel; a channel far smaller than that term cannot be held
+// to 1e-3 of itself below those roundings. 8 u = 4.8e-7 of the largest
+// contribution: a handful of roundings, and within the 1e-6 of it that the
+// issue allows. In these scenes every albedo and light-colour channel is at
+// least 1/4 of the largest and the ambient term is positive, so 1e-3 of the
+// expected value exceeds this floor on every pixel of the plane; the floor
+// only guards a channel whose exact value is (nearly) 0 from a 0/0 test.
+constexpr double kAbsoluteFloorUlps = 8;
+constexpr double kUnitRoundoff = 0x1p-24;
+
+constexpr int kReportedFailures = 5;
+
+struct Worst {
+  double relative = 0;
+  int i = -1, j = -1, channel = -1;
+  double rendered = 0, expected = 0;
+};
+
+struct BackendResult {
+  Worst worst;
+  int comparedOnPlane = 0;
+  int background = 0;
+  int nearEdge = 0;
+};
+
+std::string describe(const std::string& backend, const SceneSpec& s, int i, int j) {
+  std::ostringstream out;
+  out << "[" << backend << "] " << s.name << " pixel (" << i << ", " << j << ")";
+  return out.str();
+}
+
+// Compares one backend's image with the model; reports through gtest.
+BackendResult compareImage(const std::string& backend, const SceneSpec& s, const imaging::Image& image,
+                           const std::vector<ExpectedPixel>& expected) {
+  BackendResult result;
+  EXPECT_EQ(image.width, s.width) << "[" << backend << "] " << s.name;
+  EXPECT_EQ(image.height, s.height) << "[" << backend << "] " << s.name;
+  EXPECT_EQ(image.channels, 4) << "[" << backend << "] " << s.name;
+  if (image.width != s.width || image.height != s.height || image.channels != 4) return result;
+
+  int nonFinite = 0, badAlpha = 0, badBackground = 0, failures = 0;
+  for (int j = 0; j < s.height; ++j)
+    for (int i = 0; i < s.width; ++i) {
+      for (int c = 0; c < 4; ++c) {
+        const float v = image.at(i, j, c);
+        if (!std::isfinite(v) && ++nonFinite <= kReportedFailures)
+          ADD_FAILURE() << describe(backend, s, i, j) << " channel " << c << ": " << v << " is not finite";
+      }
+      const float alpha = image.at(i, j, 3);
+      if (alpha != 1.0f && ++badAlpha <= kReportedFailures)
+        ADD_FAILURE() << describe(backend, s, i, j) << ": A = " << alpha << ", expected 1";
+
+      const ExpectedPixel& e = expected[std::size_t(j) * s.width + i];
+      if (e.nearEdge) {
+        ++result.nearEdge;
+        continue;
+      }
+      if (!e.onPlane) {
+        ++result.background;
+        for (int c = 0; c < 3; ++c) {
+          const float v = image.at(i, j, c);
+          if (v != 0.0f && ++badBackground <= kReportedFailures)
+            ADD_FAILURE() << std::setprecision(9) << describe(backend, s, i, j) << " channel " << c
+                          << ": background is " << v << ", expected exactly 0";
+        }
+        continue;
+      }
+      ++result.comparedOnPlane;
+      const double floor = kAbsoluteFloorUlps * kUnitRoundoff * e.largestLightContribution;
+      for (int c = 0; c < 3; ++c) {
+        const double rendered = image.at(i, j, c);
+        const double want = e.value[c];
+        const double diff = std::abs(rendered - want);
+        const double allowed = kRelativeTolerance * std::abs(want) + floor;
+        const double relative = want != 0.0 ? diff / std::abs(want)
+                                            : (diff == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+        // A NaN counts as the worst (it also failed the finiteness check).
+        if (!(relative <= result.worst.relative))
+          result.worst = {std::isnan(relative) ? std::numeric_limits<double>::infinity() : relative, i, j, c,
+                          rendered, want};
+        if (!(diff <= allowed) && ++failures <= kReportedFailures)
+          ADD_FAILURE() << std::setprecision(9) << describe(backend, s, i, j) << " channel " << c << ": rendered "
+                        << rendered << ", expected " << want << ", difference " << diff << " (allowed " << allowed
+                        << " = 1e-3 * |expected| + floor " << floor << "; relative " << relative << ")";
+      }
+    }
+  EXPECT_EQ(nonFinite, 0) << "[" << backend << "] " << s.name << ": channels that are NaN or infinite";
+  EXPECT_EQ(badAlpha, 0) << "[" << backend << "] " << s.name << ": pixels with A != 1";
+  EXPECT_EQ(badBackground, 0) << "[" << backend << "] " << s.name << ": background channels that are not 0";
+  EXPECT_EQ(failures, 0) << "[" << backend << "] " << s.name << ": channels outside 1e-3 relative (first "
+                         << kReportedFailures << " shown)";
+  // Not a vacuous pass: most of each scene is the plane, and the edge is thin.
+  EXPECT_GT(result.comparedOnPlane, s.width * s.height / 3) << "[" << backend << "] " << s.name;
+  EXPECT_LT(result.nearEdge, s.width * s.height / 20) << "[" << backend << "] " << s.name;
+  return result;
+}
+
+// Writes the scene's JSON to a temporary file and loads it as the CLI would.
+std::shared_ptr<const lighting::PreparedScene> loadThroughFile(const SceneSpec& s) {
+  const std::filesystem::path path = std::filesystem::path(::testing::TempDir()) /
+                                     ("lightcts-" + s.name + "-" + std::to_string(::getpid()) + ".json");
+  {
+    std::ofstream out(path);
+    out << sceneJson(s);
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+  }
+  lighting::Scene scene;
+  try {
+    scene = lighting::loadSceneFile(path.string());
+  } catch (...) {
+    std::filesystem::remove(path);
+    throw;
+  }
+  std::filesystem::remove(path);
+  return lighting::prepareScene(std::move(scene));
+}
+
+// Renders the case on every backend that can be created here and compares;
+// a skip when none can.
+void checkOnEveryBackend(const PlaneCase& planeCase) {
+  const SceneSpec& s = planeCase.scene;
+  SCOPED_TRACE("scene " + s.name);
+  const auto prepared = loadThroughFile(s);
+  const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
+  const std::vector<ExpectedPixel> expected = expectedPixels(s, planeCase.applied);
+
+  int created = 0;
+  std::string notSupported;
+  for (const backends::BackendEntry& entry : backends::compiledBackends()) {
+    backends::BackendOptions options;
+    options.validation = true;
+    std::unique_ptr<backends::Backend> backend;
+    try {
+      backend = entry.create(options);
+    } catch (const backends::NotSupportedError& e) {
+      notSupported += (notSupported.empty() ? "" : "; ") + entry.name + ": " + e.what();
+      continue;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "[" << entry.name << "] creating the backend failed: " << e.what();
+      continue;
+    }
+    ++created;
+    imaging::Image image;
+    try {
+      image = backend->render(frame);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "[" << entry.name << "] " << s.name << ": rendering failed: " << e.what();
+      continue;
+    }
+    const BackendResult r = compareImage(entry.name, s, image, expected);
+    std::ostringstream worst;
+    worst << std::setprecision(3) << r.worst.relative;
+    ::testing::Test::RecordProperty("worst_relative_error_" + entry.name, worst.str());
+    std::printf(
+        "[ %s on %s (%s) ] worst relative error %.3g at pixel (%d, %d) channel %d: rendered %.9g, expected %.9g; "
+        "%d pixels compared on the plane, %d background, %d within 1/16 pixel of the edge\n",
+        s.name.c_str(), entry.name.c_str(), backend->device().name.c_str(), r.worst.relative, r.worst.i, r.worst.j,
+        r.worst.channel, r.worst.rendered, r.worst.expected, r.comparedOnPlane, r.background, r.nearEdge);
+  }
+  if (created == 0) GTEST_SKIP() << "no backend can be created here: " << notSupported;
+}
+
+TEST(IndependentPlaneBackend, Orthographic) { checkOnEveryBackend(orthographicCase()); }
+
+TEST(IndependentPlaneBackend, Perspective) { checkOnEveryBackend(perspectiveCase()); }
+
+TEST(IndependentPlaneBackend, PerspectiveFarFromOrigin) { checkOnEveryBackend(perspectiveFarCase()); }
+
+TEST(IndependentPlaneBackend, LightOnTheSurface) {
+  const PlaneCase c = lightOnSurfaceCase();
+  // The pixels under "p_on" (16, 16) and "p_low" (8, 20) must be compared.
+  const std::vector<ExpectedPixel> expected = expectedPixels(c.scene, c.applied);
+  for (const auto& [i, j] : {std::pair{16, 16}, std::pair{8, 20}}) {
+    const ExpectedPixel& e = expected[std::size_t(j) * c.scene.width + i];
+    EXPECT_TRUE(e.onPlane && !e.nearEdge) << "pixel (" << i << ", " << j << ")";
+  }
+  checkOnEveryBackend(c);
+}
+
+TEST(IndependentPlaneBackend, PerObjectTruncation) { checkOnEveryBackend(perObjectTruncationCase()); }
+
+TEST(IndependentPlaneBackend, LegacyVertexLights) { checkOnEveryBackend(legacyVertexLightsCase()); }
+
+}  // namespace

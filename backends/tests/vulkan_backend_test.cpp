@@ -1,0 +1,137 @@
+// The Vulkan backend on the machine's real driver (lavapipe in CI): device
+// choice, that validation messages fail a render, the readback's orientation,
+// and that the specialised pipeline draws what the full one draws.
+#include "backends/backend.h"
+#include "backends/vulkan/vulkan_device.h"
+#include "lighting/frame.h"
+#include "lighting/scene_loader.h"
+#include "reference/reference_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace {
+
+using backends::DeviceInfo;
+using backends::NotSupportedError;
+
+std::vector<DeviceInfo> devices(std::initializer_list<const char*> names) {
+  std::vector<DeviceInfo> out;
+  for (const char* n : names) out.push_back({n, "driver", "1.0", "1.3"});
+  return out;
+}
+
+TEST(VulkanDeviceChoice, DefaultIsTheFirstDevice) {
+  EXPECT_EQ(backends::vulkan::chooseDevice(devices({"llvmpipe", "NVIDIA H100"}), ""), 0u);
+}
+
+TEST(VulkanDeviceChoice, ByIndexOrCaseInsensitiveNameSubstring) {
+  const auto list = devices({"llvmpipe (LLVM 15)", "NVIDIA H100 80GB"});
+  EXPECT_EQ(backends::vulkan::chooseDevice(list, "1"), 1u);
+  EXPECT_EQ(backends::vulkan::chooseDevice(list, "h100"), 1u);
+  EXPECT_EQ(backends::vulkan::chooseDevice(list, "LLVM"), 0u);
+}
+
+TEST(VulkanDeviceChoice, NothingMatchingIsNotSupportedAndListsTheDevices) {
+  const auto list = devices({"llvmpipe"});
+  try {
+    backends::vulkan::chooseDevice(list, "2");
+    FAIL() << "index 2 of one device was accepted";
+  } catch (const NotSupportedError& e) {
+    EXPECT_NE(std::string(e.what()).find("[0] llvmpipe"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(backends::vulkan::chooseDevice(list, "radeon"), NotSupportedError);
+  EXPECT_THROW(backends::vulkan::chooseDevice({}, ""), NotSupportedError);
+}
+
+// A backend on the first device with validation on, or a skip.
+std::unique_ptr<backends::Backend> createOrSkip(backends::BackendOptions options = {}) {
+  options.validation = true;
+  try {
+    return backends::findCompiledBackend("vulkan")->create(options);
+  } catch (const NotSupportedError& e) {
+    return nullptr;
+  }
+}
+
+TEST(VulkanValidation, AnInvalidCallFailsWithTheLayersMessage) {
+  try {
+    backends::vulkan::VulkanInstance instance(true);
+    if (!instance.validationLog()) GTEST_SKIP() << "VK_LAYER_KHRONOS_validation is not installed";
+    backends::vulkan::VulkanDevice device(instance, "");
+    // Anisotropic filtering without enabling the samplerAnisotropy feature:
+    // a validation error that every driver survives.
+    const vk::SamplerCreateInfo invalid{.anisotropyEnable = VK_TRUE, .maxAnisotropy = 2.0f};
+    { vk::raii::Sampler sampler(device.device, invalid); }
+    try {
+      instance.validationLog()->throwIfAny("creating a sampler");
+      FAIL() << "the layer said nothing about an invalid sampler";
+    } catch (const backends::DriverError& e) {
+      EXPECT_NE(std::string(e.what()).find("anisotropy"), std::string::npos) << e.what();
+    }
+  } catch (const NotSupportedError& e) {
+    GTEST_SKIP() << e.what();
+  }
+}
+
+// A white floor lit straight down by a directional light of intensity 1 fills
+// exactly the top-left quadrant of an orthographic view: value 1 there, 0
+// elsewhere (hand derivation: albedo 1 * finalColor 1 * saturate(N.L = 1)).
+constexpr const char* kQuadrantScene = R"({
+  "lightcts": 1, "name": "quadrant", "image": {"width": 16, "height": 8},
+  "camera": {"position": [0, 10, 0], "target": [0, 0, 0], "up": [0, 0, -1],
+             "projection": "orthographic", "height": 8, "near": 0.1, "far": 100},
+  "objects": [{"name": "floor", "mesh": {"type": "plane", "size": [8, 4]},
+               "transform": {"translate": [-4, 0, -2]}, "material": {"albedo": [1, 1, 1]}}],
+  "lights": [{"name": "sun", "type": "directional", "direction": [0, -1, 0], "color": [1, 1, 1], "intensity": 1}]
+})";
+
+TEST(VulkanReadback, RowZeroIsTheTopAndColumnZeroTheLeft) {
+  auto backend = createOrSkip();
+  if (!backend) GTEST_SKIP() << "no Vulkan device";
+  const auto prepared = lighting::prepareScene(lighting::loadSceneText(kQuadrantScene, "quadrant.json"));
+  const imaging::Image image = backend->render(lighting::prepareFrame(prepared, 0));
+  ASSERT_EQ(image.width, 16);
+  ASSERT_EQ(image.height, 8);
+  ASSERT_EQ(image.channels, 4);
+  // The camera's up is -Z, so the floor's -Z half is the top of the image and
+  // its -X half the left; pixel centres keep half a pixel from the edges.
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const float expected = (x < 8 && y < 4) ? 1.0f : 0.0f;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(image.at(x, y, c), expected, 1e-6) << "pixel (" << x << ", " << y << ")";
+      EXPECT_EQ(image.at(x, y, 3), 1.0f) << "alpha of (" << x << ", " << y << ")";
+    }
+}
+
+// Every suite scene: the specialised pipeline and the full one (every feature
+// on, decided at run time from the uniforms) give the same image within the
+// reference's tolerance.
+TEST(VulkanSpecialisation, SpecialisedAndFullShadersAgreeOnEveryScene) {
+  auto specialised = createOrSkip();
+  backends::BackendOptions fullOptions;
+  fullOptions.variant.specialised = false;
+  auto full = createOrSkip(fullOptions);
+  if (!specialised || !full) GTEST_SKIP() << "no Vulkan device";
+  int scenes = 0;
+  for (const auto& group : std::filesystem::directory_iterator(LIGHTCTS_SCENES_DIR))
+    for (const auto& file : std::filesystem::directory_iterator(group.path())) {
+      const auto prepared = lighting::prepareScene(lighting::loadSceneFile(file.path().string()));
+      const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
+      const imaging::Image a = specialised->render(frame);
+      const imaging::Image b = full->render(frame);
+      const reference::ReferenceImages ref = reference::ReferenceRenderer(prepared).render(frame);
+      long long differing = 0;
+      for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+          for (int c = 0; c < 3; ++c)
+            if (!(std::abs(a.at(x, y, c) - b.at(x, y, c)) <= ref.tolerance.at(x, y, c))) ++differing;
+      EXPECT_EQ(differing, 0) << file.path();
+      ++scenes;
+    }
+  EXPECT_GE(scenes, 15);
+}
+
+}  // namespace

@@ -1,0 +1,207 @@
+#include "backends/vulkan/vulkan_backend.h"
+
+#include "backends/vulkan/forward_pipeline.h"
+#include "backends/vulkan/frame_resources.h"
+#include "backends/vulkan/pipeline_cache_file.h"
+#include "backends/vulkan/readback.h"
+#include "backends/vulkan/scene_geometry.h"
+#include "backends/vulkan/vulkan_device.h"
+#include "lighting/gpu_packing.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+namespace backends::vulkan {
+namespace {
+
+constexpr std::uint64_t kNoTimeout = UINT64_MAX;
+
+class VulkanBackend final : public Backend {
+ public:
+  explicit VulkanBackend(const BackendOptions& options)
+      : options_(options),
+        instance_(options.validation),
+        device_(instance_, options.device),
+        cache_(device_),
+        pipelines_(device_, cache_) {
+    pool_ = vk::raii::CommandPool(device_.device,
+                                  vk::CommandPoolCreateInfo{.flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                            .queueFamilyIndex = device_.queueFamily});
+    vk::raii::CommandBuffers buffers(device_.device, vk::CommandBufferAllocateInfo{
+                                                         .commandPool = *pool_,
+                                                         .level = vk::CommandBufferLevel::ePrimary,
+                                                         .commandBufferCount = 1});
+    commands_ = std::move(buffers.front());
+    fence_ = vk::raii::Fence(device_.device, vk::FenceCreateInfo{});
+    checkValidation("creating the device");
+  }
+
+  DeviceInfo device() const override { return device_.info; }
+
+  void preparePipeline(const lighting::Frame& frame) override {
+    pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
+    checkValidation("creating the forward pipeline");
+  }
+
+  void draw(const lighting::Frame& frame) override {
+    const lighting::ImageSize size = frame.scene().image;
+    const vk::Extent2D extent{std::uint32_t(size.width), std::uint32_t(size.height)};
+    if (!target_ || target_->color.extent != extent) {
+      target_.reset();
+      target_.emplace(device_, extent);
+    }
+    if (!geometry_ || geometry_->prepared != frame.prepared) {
+      geometry_.reset();
+      geometry_.emplace(device_, frame.prepared, packGeometry(*frame.prepared));
+    }
+    const std::size_t objectCount = frame.scene().objects.size();
+    if (!uniforms_ || uniforms_->objectCapacity() < objectCount) {
+      uniforms_.reset();
+      uniforms_.emplace(device_, pipelines_.setLayout(), objectCount);
+    }
+    uniforms_->write(lighting::packFrameBlock(frame));
+    for (std::size_t o = 0; o < objectCount; ++o) uniforms_->write(o, lighting::packObjectBlock(frame, int(o)));
+
+    const vk::raii::Pipeline& pipeline = pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
+    submit([&](const vk::raii::CommandBuffer& cb) { recordForwardPass(cb, pipeline); },
+           "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath);
+    drawn_ = true;
+  }
+
+  imaging::Image readback() override {
+    if (!drawn_) throw DriverError("readback() before any draw()");
+    submit([&](const vk::raii::CommandBuffer& cb) { recordReadback(cb, *target_); }, "reading the image back");
+    drawn_ = false;  // the colour target has left the attachment layout
+    return stagingToImage(*target_);
+  }
+
+ private:
+  void recordForwardPass(const vk::raii::CommandBuffer& cb, const vk::raii::Pipeline& pipeline) const {
+    const vk::Extent2D extent = target_->color.extent;
+    // Whatever the last submission did with the targets (a readback copy, the
+    // last pass's depth writes) happens before this pass overwrites them.
+    const std::array<vk::ImageMemoryBarrier2, 2> toAttachment{{
+        {.srcStageMask = vk::PipelineStageFlagBits2::eAllCommands,
+         .srcAccessMask = vk::AccessFlagBits2::eMemoryWrite,
+         .dstStageMask = vk::PipelineStageFlagBits2::eColorAttachmentOutput,
+         .dstAccessMask = vk::AccessFlagBits2::eColorAttachmentWrite,
+         .oldLayout = vk::ImageLayout::eUndefined,
+         .newLayout = vk::ImageLayout::eColorAttachmentOptimal,
+         .image = *target_->color.image,
+         .subresourceRange = {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}},
+        {.srcStageMask = vk::PipelineStageFlagBits2::eAllCommands,
+         .srcAccessMask = vk::AccessFlagBits2::eMemoryWrite,
+         .dstStageMask = vk::PipelineStageFlagBits2::eEarlyFragmentTests | vk::PipelineStageFlagBits2::eLateFragmentTests,
+         .dstAccessMask = vk::AccessFlagBits2::eDepthStencilAttachmentRead |
+                          vk::AccessFlagBits2::eDepthStencilAttachmentWrite,
+         .oldLayout = vk::ImageLayout::eUndefined,
+         .newLayout = vk::ImageLayout::eDepthAttachmentOptimal,
+         .image = *target_->depth.image,
+         .subresourceRange = {vk::ImageAspectFlagBits::eDepth, 0, 1, 0, 1}},
+    }};
+    cb.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = toAttachment.size(),
+                                           .pImageMemoryBarriers = toAttachment.data()});
+
+    // Background: value 0 (SPEC 6), alpha 1 (SPEC 8).
+    const vk::RenderingAttachmentInfo color{
+        .imageView = *target_->color.view,
+        .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
+        .loadOp = vk::AttachmentLoadOp::eClear,
+        .storeOp = vk::AttachmentStoreOp::eStore,
+        .clearValue = vk::ClearColorValue(std::array<float, 4>{0.0f, 0.0f, 0.0f, 1.0f}),
+    };
+    const vk::RenderingAttachmentInfo depth{
+        .imageView = *target_->depth.view,
+        .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
+        .loadOp = vk::AttachmentLoadOp::eClear,
+        .storeOp = vk::AttachmentStoreOp::eDontCare,
+        .clearValue = vk::ClearDepthStencilValue{1.0f, 0},
+    };
+    cb.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
+                                        .layerCount = 1,
+                                        .colorAttachmentCount = 1,
+                                        .pColorAttachments = &color,
+                                        .pDepthAttachment = &depth});
+    // Negative height: NDC y = +1 (up, lighting::CameraView) lands on
+    // framebuffer row 0, the top of the image.
+    cb.setViewport(0, vk::Viewport{.x = 0.0f, .y = float(extent.height), .width = float(extent.width),
+                                   .height = -float(extent.height), .minDepth = 0.0f, .maxDepth = 1.0f});
+    cb.setScissor(0, vk::Rect2D{{0, 0}, extent});
+    cb.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline);
+    cb.bindVertexBuffers(0, {*geometry_->vertices.buffer}, {vk::DeviceSize(0)});
+    cb.bindIndexBuffer(*geometry_->indices.buffer, 0, vk::IndexType::eUint32);
+    for (std::size_t o = 0; o < geometry_->objects.size(); ++o) {
+      const ObjectRange& range = geometry_->objects[o];
+      if (range.indexCount == 0) continue;
+      cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 0,
+                            {*uniforms_->descriptorSet()}, {uniforms_->objectOffset(o)});
+      cb.drawIndexed(range.indexCount, 1, range.firstIndex, range.vertexOffset, 0);
+    }
+    cb.endRendering();
+  }
+
+  // Records with `record`, submits, waits, and turns any validation message
+  // into a DriverError.
+  void submit(const std::function<void(const vk::raii::CommandBuffer&)>& record, const std::string& when) {
+    commands_.reset();
+    commands_.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+    record(commands_);
+    commands_.end();
+    const vk::CommandBuffer cb = *commands_;
+    device_.device.resetFences({*fence_});
+    device_.queue.submit(vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &cb}, *fence_);
+    if (device_.device.waitForFences({*fence_}, VK_TRUE, kNoTimeout) != vk::Result::eSuccess)
+      throw DriverError("waiting for the Vulkan queue failed while " + when);
+    checkValidation(when);
+  }
+
+  void checkValidation(const std::string& when) {
+    if (ValidationLog* log = instance_.validationLog()) log->throwIfAny(when);
+  }
+
+  BackendOptions options_;
+  VulkanInstance instance_;
+  VulkanDevice device_;
+  PipelineCacheFile cache_;
+  ForwardPipelines pipelines_;
+  vk::raii::CommandPool pool_{nullptr};
+  vk::raii::CommandBuffer commands_{nullptr};
+  vk::raii::Fence fence_{nullptr};
+  std::optional<RenderTarget> target_;
+  std::optional<SceneGeometry> geometry_;
+  std::optional<UniformBuffers> uniforms_;
+  bool drawn_ = false;
+};
+
+// Vulkan-Hpp reports failures as vk::SystemError; the commands map
+// DriverError to exit 4 with the message.
+template <class F>
+auto translatingVulkanErrors(F&& body) -> decltype(body()) {
+  try {
+    return body();
+  } catch (const vk::SystemError& e) {
+    throw DriverError(std::string("Vulkan: ") + e.what());
+  }
+}
+
+}  // namespace
+
+BackendEntry vulkanBackendEntry() {
+  BackendEntry entry;
+  entry.name = "vulkan";
+  entry.listDevices = [](const BackendOptions& options) {
+    return translatingVulkanErrors([&] {
+      VulkanInstance instance(options.validation);
+      std::vector<DeviceInfo> devices;
+      for (const vk::raii::PhysicalDevice& d : instance.physicalDevices()) devices.push_back(describeDevice(d));
+      return devices;
+    });
+  };
+  entry.create = [](const BackendOptions& options) -> std::unique_ptr<Backend> {
+    return translatingVulkanErrors([&] { return std::make_unique<VulkanBackend>(options); });
+  };
+  return entry;
+}
+
+}  // namespace backends::vulkan

@@ -1,0 +1,186 @@
+#include "comparison/comparison_report.h"
+
+#include "imaging/image_files.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+namespace comparison {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// Nine significant digits tell any two floats apart.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
+}
+
+// Appending rather than `"(" + ...`, which trips GCC 12's false -Wrestrict
+// warning (GCC bug 105329) at -O3.
+std::string triple(const float (&values)[3]) {
+  std::string text = "(";
+  text += number(values[0]) + ", " + number(values[1]) + ", " + number(values[2]) + ")";
+  return text;
+}
+
+double allowedLow(const PixelReport& p, int c, double scale) { return double(p.reference[c]) - p.tolerance[c] * scale; }
+double allowedHigh(const PixelReport& p, int c, double scale) { return double(p.reference[c]) + p.tolerance[c] * scale; }
+
+// nlohmann writes NaN and infinity as null, which would read back as "no value".
+Json jsonNumber(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return value;
+}
+
+Json jsonTriple(const float (&values)[3]) {
+  return Json::array({jsonNumber(values[0]), jsonNumber(values[1]), jsonNumber(values[2])});
+}
+
+// ".NAME.partial.EXT" beside the target, as imaging does, so a reader never
+// sees a half-written file and OIIO still picks the format from the extension.
+fs::path partialPath(const fs::path& target) {
+  std::string name = ".";  // appended, not `"." + ...`: see triple()
+  name += target.stem().string() + ".partial" + target.extension().string();
+  return target.parent_path() / name;
+}
+
+void renameIntoPlace(const fs::path& temporary, const fs::path& target) {
+  std::error_code ec;
+  fs::rename(temporary, target, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error("cannot write " + target.string() + ": " + ec.message());
+  }
+}
+
+// The mask is data, not light: written as exact 8-bit levels rather than
+// through writePngPreview's tone mapping.
+void writeErrorMask(const fs::path& target, const imaging::Image& mask) {
+  std::vector<std::uint8_t> bytes(mask.pixels.size());
+  std::transform(mask.pixels.begin(), mask.pixels.end(), bytes.begin(),
+                 [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); });
+  const fs::path temporary = partialPath(target);
+  auto out = OIIO::ImageOutput::create(temporary.string());
+  if (!out) throw imaging::ImageFileError("cannot write " + target.string() + ": " + OIIO::geterror());
+  const OIIO::ImageSpec spec(mask.width, mask.height, mask.channels, OIIO::TypeDesc::UINT8);
+  if (!out->open(temporary.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) ||
+      !out->close()) {
+    const std::string message = out->geterror();
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw imaging::ImageFileError("cannot write " + target.string() + ": " + message);
+  }
+  renameIntoPlace(temporary, target);
+}
+
+void writeText(const fs::path& target, const std::string& text) {
+  const fs::path temporary = partialPath(target);
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    file << text;
+    file.close();
+    if (!file) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw std::runtime_error("cannot write " + target.string());
+    }
+  }
+  renameIntoPlace(temporary, target);
+}
+
+}  // namespace
+
+void printComparison(std::ostream& out, const Comparison& comparison, std::string_view testName) {
+  out << verdictName(comparison.verdict) << ' ' << testName << ": " << comparison.failingPixels << " failing of "
+      << comparison.comparedPixels << " compared pixels (" << comparison.maskedPixels << " masked), max error "
+      << number(comparison.maxAbsError) << ", tightness " << number(comparison.maxErrorOverTolerance) << '\n';
+  if (comparison.nonFinitePixels > 0)
+    out << "  " << comparison.nonFinitePixels << " non-finite pixels (NaN or infinity in the result always fail)\n";
+  if (comparison.maxFailingPixels > 0) out << "  up to " << comparison.maxFailingPixels << " failing pixels allowed\n";
+  if (comparison.toleranceScale != 1) out << "  tolerances scaled by " << number(comparison.toleranceScale) << '\n';
+  if (comparison.expectFail) {
+    if (comparison.comparisonPassed)
+      out << "  expect_fail: the expected mismatch went UNDETECTED (the comparison passed)\n";
+    else if (comparison.nonFinitePixels > 0)
+      out << "  expect_fail: the comparison failed, but non-finite values are never the expected mismatch\n";
+    else
+      out << "  expect_fail: the expected mismatch was detected\n";
+  }
+
+  for (const PixelReport& p : comparison.worst) {
+    out << "  (" << p.x << ", " << p.y << ") result " << triple(p.result) << " reference " << triple(p.reference)
+        << " allowed";
+    for (int c = 0; c < 3; ++c)
+      out << " [" << number(allowedLow(p, c, comparison.toleranceScale)) << ", "
+          << number(allowedHigh(p, c, comparison.toleranceScale)) << ']';
+    out << " excess " << number(p.excess) << (p.nonFinite ? " non-finite" : "") << '\n';
+  }
+  const long long unlisted = comparison.failingPixels - static_cast<long long>(comparison.worst.size());
+  if (!comparison.worst.empty() && unlisted > 0) out << "  and " << unlisted << " more failing pixels\n";
+}
+
+Json comparisonJson(const Comparison& comparison, std::string_view testName) {
+  Json worst = Json::array();
+  for (const PixelReport& p : comparison.worst) {
+    Json allowed = Json::array();
+    for (int c = 0; c < 3; ++c)
+      allowed.push_back(Json::array({jsonNumber(allowedLow(p, c, comparison.toleranceScale)),
+                                     jsonNumber(allowedHigh(p, c, comparison.toleranceScale))}));
+    worst.push_back(Json{{"x", p.x},
+                         {"y", p.y},
+                         {"result", jsonTriple(p.result)},
+                         {"reference", jsonTriple(p.reference)},
+                         {"tolerance", jsonTriple(p.tolerance)},
+                         {"allowed", allowed},
+                         {"excess", jsonNumber(p.excess)},
+                         {"non_finite", p.nonFinite}});
+  }
+  return Json{{"test", testName},
+              {"verdict", verdictName(comparison.verdict)},
+              {"comparison_passed", comparison.comparisonPassed},
+              {"expect_fail", comparison.expectFail},
+              {"width", comparison.width},
+              {"height", comparison.height},
+              {"compared_pixels", comparison.comparedPixels},
+              {"masked_pixels", comparison.maskedPixels},
+              {"failing_pixels", comparison.failingPixels},
+              {"non_finite_pixels", comparison.nonFinitePixels},
+              {"max_failing_pixels", comparison.maxFailingPixels},
+              {"tolerance_scale", jsonNumber(comparison.toleranceScale)},
+              {"max_abs_error", jsonNumber(comparison.maxAbsError)},
+              {"max_error_over_tolerance", jsonNumber(comparison.maxErrorOverTolerance)},
+              {"rmse", jsonNumber(comparison.rmse)},
+              {"worst", worst}};
+}
+
+void writeEvidence(const std::string& dir, const Comparison& comparison, const imaging::Image& result,
+                   const reference::ReferenceImages& reference, std::string_view testName) {
+  const fs::path folder(dir);
+  fs::create_directories(folder);
+  // A summary from an earlier run would vouch for the files about to be
+  // replaced if this run stopped half way.
+  fs::remove(folder / "summary.json");
+  const auto path = [&](const char* name) { return (folder / name).string(); };
+  imaging::writeExr(path("result.exr"), result);
+  imaging::writeExr(path("reference.exr"), reference.value);
+  imaging::writeExr(path("tolerance.exr"), reference.tolerance);
+  imaging::writePngPreview(path("result.png"), result);
+  imaging::writePngPreview(path("reference.png"), reference.value);
+  writeErrorMask(folder / "error-mask.png", comparison.errorMask);
+  writeText(folder / "summary.json", comparisonJson(comparison, testName).dump(2) + "\n");
+}
+
+}  // namespace comparison

@@ -1,0 +1,224 @@
+// The text report, the JSON, and the evidence folder, on the same hand-built
+// 4x3 images as image_comparison_test.cpp.
+#include "comparison/comparison_report.h"
+#include "comparison/tests/comparison_fixtures.h"
+#include "imaging/image_files.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace comparison {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace comparison::testing;
+
+// One pixel off by 0.5 in red at (2, 1), one masked pixel at (0, 0).
+Images onePixelOff() {
+  Images images = uniform(4, 3);
+  images.result.at(2, 1, 0) = 1.0f;
+  mask(images, 0, 0);
+  return images;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// A fresh folder per test, removed afterwards.
+class EvidenceFolder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("lightcts-comparison-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST(PrintComparison, FirstLineAndWorstPixels) {
+  const Images images = onePixelOff();
+  std::ostringstream out;
+  printComparison(out, compareImages(images.result, images.reference, {}), "attenuation.point-d-zero.vulkan");
+  const std::vector<std::string> text = lines(out.str());
+  ASSERT_EQ(text.size(), 2u) << out.str();
+  EXPECT_EQ(text[0],
+            "Fail attenuation.point-d-zero.vulkan: 1 failing of 11 compared pixels (1 masked), max error 0.5, "
+            "tightness 2");
+  EXPECT_EQ(text[1],
+            "  (2, 1) result (1, 0.5, 0.5) reference (0.5, 0.5, 0.5) allowed [0.25, 0.75] [0.25, 0.75] "
+            "[0.25, 0.75] excess 0.25");
+}
+
+TEST(PrintComparison, ShowsFloatDifferences) {
+  Images images = uniform(1, 1);
+  images.reference.tolerance.at(0, 0, 0) = 0;
+  images.result.at(0, 0, 0) = 0.5f + 0x1p-24f;
+  std::ostringstream out;
+  printComparison(out, compareImages(images.result, images.reference, {}), "t");
+  EXPECT_NE(out.str().find("result (0.50000006, 0.5, 0.5)"), std::string::npos) << out.str();
+}
+
+TEST(PrintComparison, SaysWhetherAnExpectedMismatchWasDetected) {
+  lighting::Expectation expect;
+  expect.expectFail = true;
+  const Images off = onePixelOff();
+  std::ostringstream detected;
+  printComparison(detected, compareImages(off.result, off.reference, expect), "t");
+  EXPECT_EQ(lines(detected.str())[0].rfind("Pass t: 1 failing", 0), 0u) << detected.str();
+  EXPECT_NE(detected.str().find("expected mismatch was detected"), std::string::npos) << detected.str();
+
+  const Images equal = uniform(4, 3);
+  std::ostringstream undetected;
+  printComparison(undetected, compareImages(equal.result, equal.reference, expect), "t");
+  EXPECT_EQ(lines(undetected.str())[0].rfind("Fail t: 0 failing", 0), 0u) << undetected.str();
+  EXPECT_NE(undetected.str().find("UNDETECTED"), std::string::npos) << undetected.str();
+}
+
+TEST(PrintComparison, ExpectFailWithNonFiniteValues) {
+  Images images = uniform(4, 3);
+  images.result.at(0, 1, 0) = std::numeric_limits<float>::infinity();
+  lighting::Expectation expect;
+  expect.expectFail = true;
+  std::ostringstream out;
+  printComparison(out, compareImages(images.result, images.reference, expect), "t");
+  const std::vector<std::string> text = lines(out.str());
+  ASSERT_EQ(text.size(), 4u) << out.str();
+  EXPECT_EQ(text[0].rfind("Fail t: 1 failing", 0), 0u) << out.str();
+  EXPECT_EQ(text[1], "  1 non-finite pixels (NaN or infinity in the result always fail)");
+  EXPECT_NE(text[2].find("never the expected mismatch"), std::string::npos) << out.str();
+  EXPECT_EQ(text[3],
+            "  (0, 1) result (inf, 0.5, 0.5) reference (0.5, 0.5, 0.5) allowed [0.25, 0.75] [0.25, 0.75] "
+            "[0.25, 0.75] excess inf non-finite");
+}
+
+TEST(PrintComparison, CountsFailingPixelsNotListed) {
+  Images images = uniform(4, 3);
+  for (int x = 0; x < 4; ++x) images.result.at(x, 0, 0) = 1.0f;
+  std::ostringstream out;
+  printComparison(out, compareImages(images.result, images.reference, {}, 2), "t");
+  const std::vector<std::string> text = lines(out.str());
+  ASSERT_EQ(text.size(), 4u) << out.str();
+  EXPECT_EQ(text[3], "  and 2 more failing pixels");
+}
+
+TEST(ComparisonJson, FieldsAndVerdict) {
+  const Images images = onePixelOff();
+  const nlohmann::ordered_json json = comparisonJson(compareImages(images.result, images.reference, {}), "a.b.c");
+  EXPECT_EQ(json["test"], "a.b.c");
+  EXPECT_EQ(json["verdict"], "Fail");
+  EXPECT_EQ(json["comparison_passed"], false);
+  EXPECT_EQ(json["expect_fail"], false);
+  EXPECT_EQ(json["width"], 4);
+  EXPECT_EQ(json["height"], 3);
+  EXPECT_EQ(json["compared_pixels"], 11);
+  EXPECT_EQ(json["masked_pixels"], 1);
+  EXPECT_EQ(json["failing_pixels"], 1);
+  EXPECT_EQ(json["non_finite_pixels"], 0);
+  EXPECT_EQ(json["max_failing_pixels"], 0);
+  EXPECT_EQ(json["tolerance_scale"], 1.0);
+  EXPECT_EQ(json["max_abs_error"], 0.5);
+  EXPECT_EQ(json["max_error_over_tolerance"], 2.0);
+  EXPECT_TRUE(json["rmse"].is_number());
+  ASSERT_EQ(json["worst"].size(), 1u);
+  const auto& p = json["worst"][0];
+  EXPECT_EQ(p["x"], 2);
+  EXPECT_EQ(p["y"], 1);
+  EXPECT_EQ(p["result"], nlohmann::ordered_json::array({1.0, 0.5, 0.5}));
+  EXPECT_EQ(p["reference"], nlohmann::ordered_json::array({0.5, 0.5, 0.5}));
+  EXPECT_EQ(p["tolerance"], nlohmann::ordered_json::array({0.25, 0.25, 0.25}));
+  EXPECT_EQ(p["allowed"][0], nlohmann::ordered_json::array({0.25, 0.75}));
+  EXPECT_EQ(p["excess"], 0.25);
+  EXPECT_EQ(p["non_finite"], false);
+}
+
+TEST(ComparisonJson, NonFiniteNumbersBecomeStrings) {
+  Images images = uniform(2, 1);
+  images.result.at(0, 0, 0) = std::numeric_limits<float>::quiet_NaN();
+  images.result.at(0, 0, 1) = -std::numeric_limits<float>::infinity();
+  images.reference.tolerance.at(1, 0, 2) = 0;
+  images.result.at(1, 0, 2) = 0.75f;  // over a zero tolerance: tightness +inf
+  const nlohmann::json parsed =
+      nlohmann::json::parse(comparisonJson(compareImages(images.result, images.reference, {}), "t").dump());
+  EXPECT_EQ(parsed["max_error_over_tolerance"], "inf");
+  ASSERT_EQ(parsed["worst"].size(), 2u);
+  EXPECT_EQ(parsed["worst"][0]["excess"], "inf");
+  EXPECT_EQ(parsed["worst"][0]["result"][0], "nan");
+  EXPECT_EQ(parsed["worst"][0]["result"][1], "-inf");
+  EXPECT_EQ(parsed["worst"][0]["non_finite"], true);
+  EXPECT_EQ(parsed["worst"][1]["excess"], 0.25);
+}
+
+TEST_F(EvidenceFolder, WritesEveryFileAndSummaryLast) {
+  const Images images = onePixelOff();
+  const Comparison c = compareImages(images.result, images.reference, {});
+  writeEvidence(dir_.string(), c, images.result, images.reference, "a.b.c");
+
+  for (const char* name : {"result.exr", "reference.exr", "tolerance.exr", "result.png", "reference.png",
+                           "error-mask.png", "summary.json"})
+    EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir_)) {
+    ++files;
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+  }
+  EXPECT_EQ(files, 7);
+
+  std::ifstream summary(dir_ / "summary.json");
+  const nlohmann::json json = nlohmann::json::parse(summary);
+  EXPECT_EQ(json["failing_pixels"], 1);
+  EXPECT_EQ(json["verdict"], "Fail");
+  EXPECT_EQ(json["test"], "a.b.c");
+
+  const imaging::Image reference = imaging::readExr((dir_ / "reference.exr").string());
+  EXPECT_EQ(reference.channels, 4);
+  EXPECT_EQ(reference.pixels, images.reference.value.pixels);
+}
+
+TEST_F(EvidenceFolder, ErrorMaskHoldsExactLevels) {
+  Images images = onePixelOff();
+  images.result.at(3, 2, 0) = std::numeric_limits<float>::quiet_NaN();
+  writeEvidence(dir_.string(), compareImages(images.result, images.reference, {}), images.result, images.reference,
+                "t");
+
+  auto in = OIIO::ImageInput::open((dir_ / "error-mask.png").string());
+  ASSERT_TRUE(in) << OIIO::geterror();
+  ASSERT_EQ(in->spec().width, 4);
+  ASSERT_EQ(in->spec().height, 3);
+  ASSERT_EQ(in->spec().nchannels, 3);
+  std::vector<std::uint8_t> bytes(4 * 3 * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, bytes.data()));
+  const auto rgb = [&](int x, int y) {
+    const std::size_t i = (std::size_t(y) * 4 + x) * 3;
+    return std::vector<int>{bytes[i], bytes[i + 1], bytes[i + 2]};
+  };
+  EXPECT_EQ(rgb(0, 0), (std::vector<int>{64, 64, 64}));     // masked
+  EXPECT_EQ(rgb(2, 1), (std::vector<int>{255, 0, 0}));      // failing
+  EXPECT_EQ(rgb(3, 2), (std::vector<int>{255, 0, 255}));    // non-finite
+  EXPECT_EQ(rgb(1, 1), (std::vector<int>{0, 0, 0}));        // passing
+}
+
+TEST_F(EvidenceFolder, ReplacesAnEarlierRun) {
+  Images images = onePixelOff();
+  writeEvidence(dir_.string(), compareImages(images.result, images.reference, {}), images.result, images.reference,
+                "t");
+  images.result.at(1, 1, 1) = 0.0f;
+  writeEvidence(dir_.string(), compareImages(images.result, images.reference, {}), images.result, images.reference,
+                "t");
+  std::ifstream summary(dir_ / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(summary)["failing_pixels"], 2);
+}
+
+}  // namespace
+}  // namespace comparison

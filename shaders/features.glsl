@@ -1,0 +1,22 @@
+// Specialization constants: the features a frame uses (lighting::ShaderFeatures).
+// A backend turns off what a scene does not use, so a point-light-only scene
+// runs the short shader; every default is "on", which is the full shader.
+// The constant ids are shared with shaders/shader_constants.h.
+#ifndef LIGHTCTS_FEATURES_GLSL
+#define LIGHTCTS_FEATURES_GLSL
+
+layout(constant_id = 0) const bool DIRECTIONAL_LIGHTS = true;
+layout(constant_id = 1) const bool POINT_LIGHTS = true;
+layout(constant_id = 2) const bool SPOT_LIGHTS = true;
+// Per-object lists (srp with lights_per_object, and always in legacy).
+layout(constant_id = 3) const bool PER_OBJECT_LISTS = true;
+// The legacy profile: list positions 0-3 per pixel, 4-7 per vertex (SPEC 4),
+// and directional lights packed among the others.
+layout(constant_id = 4) const bool VERTEX_LIGHTS = true;
+layout(constant_id = 5) const bool SHADOW_MASK = true;
+layout(constant_id = 6) const bool AMBIENT = true;
+// Test only: a deliberately wrong variant of the model (mutants.glsl). 0, the
+// model itself, is the only value a shipped pipeline uses.
+layout(constant_id = 7) const int MUTANT = 0;
+
+#endif

@@ -1,0 +1,41 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Forward fragment stage: SPEC 3's sum for one fragment, over the lights the
+// CPU kept (SPEC 4 and 5): every kept light, or the object's list.
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec3 inVertexLighting;
+
+layout(location = 0) out vec4 outColor;
+
+const int kMaxLightsPerObject = 8;
+const int kLegacyPixelLights = 4;
+
+void main() {
+  vec3 p = inPosition;
+  vec3 N = normalize(inNormal);
+  // Shadow mask at this fragment; sampled from the object's map once baked
+  // lighting exists, all ones until then.
+  vec4 mask = vec4(1.0);
+  vec3 light = vec3(0.0);
+  if (AMBIENT) light += frameData.ambient.rgb;
+  // srp keeps directional lights apart and applies them to every object; the
+  // legacy profile packs them with the others.
+  if (DIRECTIONAL_LIGHTS && !legacyProfile())
+    for (int i = 0; i < frameData.lightCounts.x; ++i)
+      light += directionalLight(frameData.directionalLights[i], N, mask);
+  if (objectListInUse()) {
+    // srp: min(count, 8) per pixel; legacy: list positions 0-3 per pixel.
+    int perPixel = legacyProfile() ? kLegacyPixelLights : kMaxLightsPerObject;
+    int count = min(objectData.lightList.x, perPixel);
+    for (int k = 0; k < count; ++k)
+      light += packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask);
+  } else {
+    for (int i = 0; i < frameData.lightCounts.y; ++i)
+      light += packedLight(frameData.otherLights[i], p, N, mask);
+  }
+  if (legacyProfile()) light += inVertexLighting;
+  outColor = vec4(objectData.albedo.rgb * light, 1.0);
+}

@@ -1,0 +1,31 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Forward vertex stage: camera-relative position and rotated normal for the
+// fragment stage, and the legacy profile's vertex lights (SPEC 4: list
+// positions 4-7, evaluated here with the rotated, normalised vertex normal
+// and interpolated perspective-correct).
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+
+layout(location = 0) out vec3 outPosition;  // camera-relative world position
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec3 outVertexLighting;
+
+const int kLegacyPixelLights = 4;
+const int kMaxLightsPerObject = 8;
+
+void main() {
+  vec4 position = objectData.model * vec4(inPosition, 1.0);
+  vec3 N = normalize(mat3(objectData.normalMatrix) * inNormal);
+  outPosition = position.xyz;
+  outNormal = N;
+  outVertexLighting = vec3(0.0);
+  if (legacyProfile()) {
+    int count = min(objectData.lightList.x, kMaxLightsPerObject);
+    for (int k = kLegacyPixelLights; k < count; ++k)
+      outVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], position.xyz, N, vec4(1.0));
+  }
+  gl_Position = frameData.viewProjection * position;
+}

@@ -1,0 +1,41 @@
+// The uniform blocks, std140, exactly as lighting/gpu_packing.h lays them out
+// (lighting/tests/gpu_packing_test.cpp pins the offsets). Positions are
+// relative to the camera: the CPU subtracted the camera position in double.
+#ifndef LIGHTCTS_LIGHT_DATA_GLSL
+#define LIGHTCTS_LIGHT_DATA_GLSL
+
+struct Light {
+  vec4 position;       // xyz: camera-relative position, or L = -direction; w: 1 local, 0 directional
+  vec4 color;          // rgb: finalColor; w: invRangeSq
+  vec4 spotDirection;  // xyz: spotDir = -direction
+  vec4 spotAngles;     // x: a, y: b (point: 0, 1); z: shadow-mask channel or -1; w: strength
+};
+
+layout(std140, set = 0, binding = 0) uniform FrameBlock {
+  mat4 viewProjection;  // camera-relative world to clip: x right, y up, depth 0..1
+  vec4 ambient;
+  ivec4 lightCounts;    // x: directional lights, y: other lights, z: 1 for the legacy profile
+  Light directionalLights[4];
+  Light otherLights[64];
+} frameData;
+
+layout(std140, set = 0, binding = 1) uniform ObjectBlock {
+  mat4 model;           // local to camera-relative world
+  mat4 normalMatrix;    // the rotation R (SPEC 1)
+  vec4 albedo;
+  ivec4 lightList;      // x: list count (may exceed 8), y: lightmap, z: shadow mask, w: 1 when the list is in use
+  ivec4 lightIndices[2];  // packed indices into otherLights, -1 past the end
+  vec4 lightmapTransform;
+} objectData;
+
+// The specialised shader knows these from its constants; the full shader
+// (every constant on) asks the data, so it draws any scene.
+bool legacyProfile() { return VERTEX_LIGHTS && frameData.lightCounts.z != 0; }
+bool objectListInUse() { return PER_OBJECT_LISTS && objectData.lightList.w != 0; }
+
+// The list index k of this object (0 <= k < 8).
+int objectLightIndex(int k) {
+  return objectData.lightIndices[k / 4][k % 4];
+}
+
+#endif

@@ -1,0 +1,21 @@
+#include "shaders/shader_constants.h"
+
+namespace shaders {
+
+ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVariant& variant) {
+  ConstantValues v{};
+  const bool all = !variant.specialised;
+  v[kDirectionalLights] = all || f.directionalLights;
+  v[kPointLights] = all || f.pointLights;
+  v[kSpotLights] = all || f.spotLights;
+  // The full shader can afford these on for any scene: it checks the
+  // object's and frame's flags at run time (light_data.glsl).
+  v[kPerObjectLists] = all || f.perObjectLists;
+  v[kVertexLights] = all || f.vertexLights;
+  v[kShadowMask] = all || f.shadowMask;
+  v[kAmbient] = all || f.ambient;
+  v[kMutant] = static_cast<std::int32_t>(variant.mutant);
+  return v;
+}
+
+}  // namespace shaders

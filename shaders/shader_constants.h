@@ -1,0 +1,30 @@
+// The specialization-constant ids of shaders/features.glsl, for the C++ side
+// that fills them in (Vulkan specialization info, GL defines).
+#pragma once
+
+#include "shaders/shader_variant.h"
+#include "lighting/frame.h"
+
+#include <array>
+#include <cstdint>
+
+namespace shaders {
+
+enum ConstantId : std::uint32_t {
+  kDirectionalLights = 0,
+  kPointLights = 1,
+  kSpotLights = 2,
+  kPerObjectLists = 3,
+  kVertexLights = 4,
+  kShadowMask = 5,
+  kAmbient = 6,
+  kMutant = 7,
+  kConstantCount = 8,
+};
+
+// The value of every constant, in id order (bools as 0/1, as SPIR-V stores
+// them in 32 bits): what `frame` uses, or everything for the full shader.
+using ConstantValues = std::array<std::int32_t, kConstantCount>;
+ConstantValues constantValues(const lighting::ShaderFeatures& features, const ShaderVariant& variant);
+
+}  // namespace shaders
