@@ -24,7 +24,7 @@ int runBackendsCommand(std::ostream& out, std::ostream& err) {
       }
       if (devices.empty()) out << name << ": no device (NotSupported)\n";
       for (std::size_t i = 0; i < devices.size(); ++i)
-        out << name << " [" << i << "] " << devices[i].name << ", driver " << devices[i].driver << ", driver version "
+        out << name << " [" << devices[i].selectedBy << "] " << devices[i].name << ", driver " << devices[i].driver << ", driver version "
             << devices[i].driverVersion << ", API " << devices[i].apiVersion << "\n";
     }
     return kExitSuccess;

@@ -39,6 +39,7 @@ struct DeviceInfo {
   std::string driver;
   std::string driverVersion;
   std::string apiVersion;
+  std::string selectedBy;  // the options that pick it in `lightcts backends`: "--device 0", "--driver softpipe"
 };
 
 struct BackendOptions {

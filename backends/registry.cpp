@@ -1,5 +1,6 @@
 #include "backends/backend.h"
 
+#include "backends/gl/gl_backend.h"
 #include "backends/vulkan/vulkan_backend.h"
 
 #include <cstdlib>
@@ -22,7 +23,8 @@ bool validationRequestedByDefault() {
 }
 
 const std::vector<BackendEntry>& compiledBackends() {
-  static const std::vector<BackendEntry> entries = {vulkan::vulkanBackendEntry()};
+  static const std::vector<BackendEntry> entries = {vulkan::vulkanBackendEntry(), gl::eglBackendEntry(),
+                                                    gl::osmesaBackendEntry()};
   return entries;
 }
 

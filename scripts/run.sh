@@ -22,11 +22,16 @@ for scene in suite/scenes/*/*.json; do
   group=$(basename "$(dirname "$scene")")
   name=$(basename "$scene" .json)
   "$lightcts" reference --scene "$scene" --out "$out/reference/$group/$name" >/dev/null || error=$((error + 1))
-  for backend in vulkan; do
-    case_name="$group.$name.$backend"
+  # <test-name suffix>:<backend>:<driver>, as in suite/scene_tests.cmake.
+  for combination in vulkan:vulkan: gl-egl:gl-egl:llvmpipe gl-osmesa:gl-osmesa:llvmpipe \
+                     gl-egl-softpipe:gl-egl:softpipe gl-osmesa-softpipe:gl-osmesa:softpipe; do
+    IFS=: read -r suffix backend driver <<<"$combination"
+    driver_args=()
+    [ -n "$driver" ] && driver_args=(--driver "$driver")
+    case_name="$group.$name.$suffix"
     status=0
-    "$lightcts" compare --scene "$scene" --backend "$backend" --evidence "$out/compare/$case_name" \
-      >>"$summary" 2>&1 || status=$?
+    "$lightcts" compare --scene "$scene" --backend "$backend" "${driver_args[@]}" \
+      --evidence "$out/compare/$case_name" >>"$summary" 2>&1 || status=$?
     case $status in
       0) pass=$((pass + 1)) ;;
       1) fail=$((fail + 1)) ;;

@@ -15,6 +15,8 @@ packages=(
   glslang-tools glslang-dev spirv-cross libspirv-cross-c-shared-dev
   # Vulkan on Mesa's lavapipe, with the validation layers for test runs
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
+  # OpenGL on Mesa (llvmpipe and softpipe) through EGL and OSMesa
+  libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
 )
 
 missing=()

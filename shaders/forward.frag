@@ -4,9 +4,9 @@
 // CPU kept (SPEC 4 and 5): every kept light, or the object's list.
 #include "lighting.glsl"
 
-layout(location = 0) in vec3 inPosition;
-layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec3 inVertexLighting;
+layout(location = 0) in vec3 vPosition;
+layout(location = 1) in vec3 vNormal;
+layout(location = 2) in vec3 vVertexLighting;
 
 layout(location = 0) out vec4 outColor;
 
@@ -14,8 +14,8 @@ const int kMaxLightsPerObject = 8;
 const int kLegacyPixelLights = 4;
 
 void main() {
-  vec3 p = inPosition;
-  vec3 N = normalize(inNormal);
+  vec3 p = vPosition;
+  vec3 N = normalize(vNormal);
   // Shadow mask at this fragment; sampled from the object's map once baked
   // lighting exists, all ones until then.
   vec4 mask = vec4(1.0);
@@ -36,6 +36,6 @@ void main() {
     for (int i = 0; i < frameData.lightCounts.y; ++i)
       light += packedLight(frameData.otherLights[i], p, N, mask);
   }
-  if (legacyProfile()) light += inVertexLighting;
+  if (legacyProfile()) light += vVertexLighting;
   outColor = vec4(objectData.albedo.rgb * light, 1.0);
 }

@@ -9,9 +9,11 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 
-layout(location = 0) out vec3 outPosition;  // camera-relative world position
-layout(location = 1) out vec3 outNormal;
-layout(location = 2) out vec3 outVertexLighting;
+// Varyings have the same names in both stages: GLSL 330 (the OpenGL backend,
+// via SPIRV-Cross) links stages by name, not by location.
+layout(location = 0) out vec3 vPosition;  // camera-relative world position
+layout(location = 1) out vec3 vNormal;
+layout(location = 2) out vec3 vVertexLighting;
 
 const int kLegacyPixelLights = 4;
 const int kMaxLightsPerObject = 8;
@@ -19,13 +21,13 @@ const int kMaxLightsPerObject = 8;
 void main() {
   vec4 position = objectData.model * vec4(inPosition, 1.0);
   vec3 N = normalize(mat3(objectData.normalMatrix) * inNormal);
-  outPosition = position.xyz;
-  outNormal = N;
-  outVertexLighting = vec3(0.0);
+  vPosition = position.xyz;
+  vNormal = N;
+  vVertexLighting = vec3(0.0);
   if (legacyProfile()) {
     int count = min(objectData.lightList.x, kMaxLightsPerObject);
     for (int k = kLegacyPixelLights; k < count; ++k)
-      outVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], position.xyz, N, vec4(1.0));
+      vVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], position.xyz, N, vec4(1.0));
   }
   gl_Position = frameData.viewProjection * position;
 }

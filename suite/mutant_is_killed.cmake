@@ -2,13 +2,18 @@
 # passes only when at least one scene fails (exit 1): the comparison must be
 # able to fail (SPEC 7, mutation check). Prints NotSupported (a ctest skip)
 # when the backend is absent.
-#   cmake -DLIGHTCTS=exe -DBACKEND=vulkan -DMUTANT=name -DSCENES_DIR=dir -DEVIDENCE_DIR=dir -P mutant_is_killed.cmake
+#   cmake -DLIGHTCTS=exe -DBACKEND=vulkan [-DDRIVER=softpipe] -DMUTANT=name -DSCENES_DIR=dir
+#         -DEVIDENCE_DIR=dir -P mutant_is_killed.cmake
 file(GLOB scenes ${SCENES_DIR}/*.json)
+set(driver_args)
+if(DRIVER AND NOT DRIVER STREQUAL "default")
+  set(driver_args --driver ${DRIVER})
+endif()
 set(killers "")
 foreach(scene ${scenes})
   get_filename_component(name ${scene} NAME_WE)
   execute_process(
-    COMMAND ${LIGHTCTS} compare --scene ${scene} --backend ${BACKEND} --mutant ${MUTANT}
+    COMMAND ${LIGHTCTS} compare --scene ${scene} --backend ${BACKEND} ${driver_args} --mutant ${MUTANT}
             --evidence ${EVIDENCE_DIR}/${name}
     RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(status EQUAL 3)

@@ -1,5 +1,14 @@
 # ctest tests driven by the scene files, through the real `lightcts` command.
 # Names follow SPEC 10: <group>.<name>.<what>; labels per group and per kind.
+
+# <test-name suffix>=<backend>=<driver>: every backend and Mesa driver pair
+# of SPEC 10's names.
+set(backend_combinations
+  "vulkan=vulkan=default"
+  "gl-egl=gl-egl=llvmpipe"
+  "gl-osmesa=gl-osmesa=llvmpipe"
+  "gl-egl-softpipe=gl-egl=softpipe"
+  "gl-osmesa-softpipe=gl-osmesa=softpipe")
 set(backend_test_environment
   "LIGHTCTS_VALIDATION=1"
   "LIGHTCTS_CACHE_DIR=${CMAKE_BINARY_DIR}/cache")
@@ -12,6 +21,19 @@ set(backend_test_environment
 if(CMAKE_CXX_FLAGS MATCHES "sanitize=address")
   list(APPEND backend_test_environment "ASAN_OPTIONS=detect_leaks=0")
 endif()
+
+# Splits "suffix=backend=driver" into suffix, backend and driver_args.
+macro(split_combination combination)
+  string(REPLACE "=" ";" combination_parts ${combination})
+  list(GET combination_parts 0 suffix)
+  list(GET combination_parts 1 backend)
+  list(GET combination_parts 2 driver)
+  set(driver_args)
+  if(NOT driver STREQUAL "default")
+    set(driver_args --driver ${driver})
+  endif()
+endmacro()
+
 file(GLOB scene_files CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/scenes/*/*.json)
 foreach(scene ${scene_files})
   get_filename_component(name ${scene} NAME_WLE)
@@ -26,27 +48,36 @@ foreach(scene ${scene_files})
            COMMAND lightcts reference --scene ${scene} --out ${CMAKE_BINARY_DIR}/test-out/reference/${group}/${name})
   set_tests_properties(${group}.${name}.reference PROPERTIES LABELS "reference;${group}")
   # The scene on each backend against the reference (SPEC 7): exit 3 (no
-  # device) is a skip; validation is on and any layer message fails.
-  add_test(NAME ${group}.${name}.vulkan
-           COMMAND lightcts compare --scene ${scene} --backend vulkan
-                   --evidence ${CMAKE_BINARY_DIR}/test-out/evidence/${group}.${name}.vulkan)
-  set_tests_properties(${group}.${name}.vulkan PROPERTIES LABELS "vulkan;${group}" SKIP_RETURN_CODE 3
-    ENVIRONMENT "${backend_test_environment}" FAIL_REGULAR_EXPRESSION "Validation (Error|Warning)|VUID-")
+  # device or driver) is a skip; Vulkan validation is on and any layer
+  # message fails.
+  foreach(combination ${backend_combinations})
+    split_combination(${combination})
+    set(test ${group}.${name}.${suffix})
+    add_test(NAME ${test}
+             COMMAND lightcts compare --scene ${scene} --backend ${backend} ${driver_args}
+                     --evidence ${CMAKE_BINARY_DIR}/test-out/evidence/${test})
+    set_tests_properties(${test} PROPERTIES LABELS "${suffix};${group}" SKIP_RETURN_CODE 3
+      ENVIRONMENT "${backend_test_environment}" FAIL_REGULAR_EXPRESSION "Validation (Error|Warning)|VUID-")
+  endforeach()
 endforeach()
 
-# Mutants (SPEC 7): each deliberately wrong variant must make a scene fail.
+# Mutants (SPEC 7): each deliberately wrong variant must make a scene of its
+# group fail, on every backend.
 set(mutant_groups "distance-clamp-1e-4=attenuation")
 foreach(entry ${mutant_groups})
-  string(REPLACE "=" ";" parts ${entry})
-  list(GET parts 0 mutant)
-  list(GET parts 1 group)
-  add_test(NAME mutants.${mutant}.vulkan
-           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DBACKEND=vulkan -DMUTANT=${mutant}
-                   -DSCENES_DIR=${CMAKE_CURRENT_SOURCE_DIR}/scenes/${group}
-                   -DEVIDENCE_DIR=${CMAKE_BINARY_DIR}/test-out/mutants/${mutant}.vulkan
-                   -P ${CMAKE_CURRENT_SOURCE_DIR}/mutant_is_killed.cmake)
-  set_tests_properties(mutants.${mutant}.vulkan PROPERTIES LABELS "mutants;vulkan"
-    SKIP_REGULAR_EXPRESSION "NotSupported" ENVIRONMENT "${backend_test_environment}")
+  string(REPLACE "=" ";" mutant_parts ${entry})
+  list(GET mutant_parts 0 mutant)
+  list(GET mutant_parts 1 group)
+  foreach(combination ${backend_combinations})
+    split_combination(${combination})
+    add_test(NAME mutants.${mutant}.${suffix}
+             COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DBACKEND=${backend} -DDRIVER=${driver}
+                     -DMUTANT=${mutant} -DSCENES_DIR=${CMAKE_CURRENT_SOURCE_DIR}/scenes/${group}
+                     -DEVIDENCE_DIR=${CMAKE_BINARY_DIR}/test-out/mutants/${mutant}.${suffix}
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/mutant_is_killed.cmake)
+    set_tests_properties(mutants.${mutant}.${suffix} PROPERTIES LABELS "mutants;${suffix}"
+      SKIP_REGULAR_EXPRESSION "NotSupported" ENVIRONMENT "${backend_test_environment}")
+  endforeach()
 endforeach()
 
 # The command-line contract of SPEC 8 through the real binary: exit statuses

@@ -124,8 +124,11 @@ TEST_F(CommandsTest, UnknownBackendExitsTwoAndAbsentBackendIsNotSupported) {
   const std::string scene = writeScene(kSelectionScene);
   EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "metal"}, "", out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("unknown backend 'metal'"), std::string::npos);
-  // A SPEC backend this build lacks is a skip (3), never a pass (0).
-  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "gl-osmesa"}, "", out_, err_), kExitNotSupported);
+  // A device that is not here is a skip (3), never a pass (0).
+  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "vulkan", .device = "no-such-device"}, "", out_, err_),
+            kExitNotSupported);
+  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "gl-osmesa", .device = "0"}, "", out_, err_),
+            kExitNotSupported);
 }
 
 TEST_F(CommandsTest, UnwritableOutputExitsTwo) {

@@ -22,6 +22,7 @@
 //  - on the plane: |rendered - expected| <= 1e-3 * |expected| + floor per RGB
 //    channel, floor as derived at kAbsoluteFloorUlps below.
 #include "backends/backend.h"
+#include "backends/tests/backend_combinations.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "testing/independent_plane/independent_plane_model.h"
@@ -171,58 +172,45 @@ std::shared_ptr<const lighting::PreparedScene> loadThroughFile(const SceneSpec& 
   return lighting::prepareScene(std::move(scene));
 }
 
-// Renders the case on every backend that can be created here and compares;
-// a skip when none can.
-void checkOnEveryBackend(const PlaneCase& planeCase) {
+// Renders the case on one backend and driver and compares; a skip when that
+// combination is not supported here.
+void checkOnBackend(const PlaneCase& planeCase, const backends::testing::Combination& combination) {
   const SceneSpec& s = planeCase.scene;
   SCOPED_TRACE("scene " + s.name);
   const auto prepared = loadThroughFile(s);
   const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
   const std::vector<ExpectedPixel> expected = expectedPixels(s, planeCase.applied);
 
-  int created = 0;
-  std::string notSupported;
-  for (const backends::BackendEntry& entry : backends::compiledBackends()) {
-    backends::BackendOptions options;
-    options.validation = true;
-    std::unique_ptr<backends::Backend> backend;
-    try {
-      backend = entry.create(options);
-    } catch (const backends::NotSupportedError& e) {
-      notSupported += (notSupported.empty() ? "" : "; ") + entry.name + ": " + e.what();
-      continue;
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "[" << entry.name << "] creating the backend failed: " << e.what();
-      continue;
-    }
-    ++created;
-    imaging::Image image;
-    try {
-      image = backend->render(frame);
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "[" << entry.name << "] " << s.name << ": rendering failed: " << e.what();
-      continue;
-    }
-    const BackendResult r = compareImage(entry.name, s, image, expected);
-    std::ostringstream worst;
-    worst << std::setprecision(3) << r.worst.relative;
-    ::testing::Test::RecordProperty("worst_relative_error_" + entry.name, worst.str());
-    std::printf(
-        "[ %s on %s (%s) ] worst relative error %.3g at pixel (%d, %d) channel %d: rendered %.9g, expected %.9g; "
-        "%d pixels compared on the plane, %d background, %d within 1/16 pixel of the edge\n",
-        s.name.c_str(), entry.name.c_str(), backend->device().name.c_str(), r.worst.relative, r.worst.i, r.worst.j,
-        r.worst.channel, r.worst.rendered, r.worst.expected, r.comparedOnPlane, r.background, r.nearEdge);
+  std::string whyNot;
+  const std::unique_ptr<backends::Backend> backend = backends::testing::createOrNull(combination, whyNot);
+  if (!backend) GTEST_SKIP() << whyNot;
+  const std::string& name = combination.suffix;
+  imaging::Image image;
+  try {
+    image = backend->render(frame);
+  } catch (const std::exception& e) {
+    FAIL() << "[" << name << "] " << s.name << ": rendering failed: " << e.what();
   }
-  if (created == 0) GTEST_SKIP() << "no backend can be created here: " << notSupported;
+  const BackendResult r = compareImage(name, s, image, expected);
+  std::ostringstream worst;
+  worst << std::setprecision(3) << r.worst.relative;
+  ::testing::Test::RecordProperty("worst_relative_error_" + name, worst.str());
+  std::printf(
+      "[ %s on %s (%s) ] worst relative error %.3g at pixel (%d, %d) channel %d: rendered %.9g, expected %.9g; "
+      "%d pixels compared on the plane, %d background, %d within 1/16 pixel of the edge\n",
+      s.name.c_str(), name.c_str(), backend->device().name.c_str(), r.worst.relative, r.worst.i, r.worst.j,
+      r.worst.channel, r.worst.rendered, r.worst.expected, r.comparedOnPlane, r.background, r.nearEdge);
 }
 
-TEST(IndependentPlaneBackend, Orthographic) { checkOnEveryBackend(orthographicCase()); }
+class IndependentPlaneBackend : public ::testing::TestWithParam<backends::testing::Combination> {};
 
-TEST(IndependentPlaneBackend, Perspective) { checkOnEveryBackend(perspectiveCase()); }
+TEST_P(IndependentPlaneBackend, Orthographic) { checkOnBackend(orthographicCase(), GetParam()); }
 
-TEST(IndependentPlaneBackend, PerspectiveFarFromOrigin) { checkOnEveryBackend(perspectiveFarCase()); }
+TEST_P(IndependentPlaneBackend, Perspective) { checkOnBackend(perspectiveCase(), GetParam()); }
 
-TEST(IndependentPlaneBackend, LightOnTheSurface) {
+TEST_P(IndependentPlaneBackend, PerspectiveFarFromOrigin) { checkOnBackend(perspectiveFarCase(), GetParam()); }
+
+TEST_P(IndependentPlaneBackend, LightOnTheSurface) {
   const PlaneCase c = lightOnSurfaceCase();
   // The pixels under "p_on" (16, 16) and "p_low" (8, 20) must be compared.
   const std::vector<ExpectedPixel> expected = expectedPixels(c.scene, c.applied);
@@ -230,11 +218,15 @@ TEST(IndependentPlaneBackend, LightOnTheSurface) {
     const ExpectedPixel& e = expected[std::size_t(j) * c.scene.width + i];
     EXPECT_TRUE(e.onPlane && !e.nearEdge) << "pixel (" << i << ", " << j << ")";
   }
-  checkOnEveryBackend(c);
+  checkOnBackend(c, GetParam());
 }
 
-TEST(IndependentPlaneBackend, PerObjectTruncation) { checkOnEveryBackend(perObjectTruncationCase()); }
+TEST_P(IndependentPlaneBackend, PerObjectTruncation) { checkOnBackend(perObjectTruncationCase(), GetParam()); }
 
-TEST(IndependentPlaneBackend, LegacyVertexLights) { checkOnEveryBackend(legacyVertexLightsCase()); }
+TEST_P(IndependentPlaneBackend, LegacyVertexLights) { checkOnBackend(legacyVertexLightsCase(), GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(EveryBackend, IndependentPlaneBackend,
+                         ::testing::ValuesIn(backends::testing::allCombinations()),
+                         [](const auto& info) { return info.param.suffix; });
 
 }  // namespace

@@ -19,7 +19,7 @@ using backends::NotSupportedError;
 
 std::vector<DeviceInfo> devices(std::initializer_list<const char*> names) {
   std::vector<DeviceInfo> out;
-  for (const char* n : names) out.push_back({n, "driver", "1.0", "1.3"});
+  for (const char* n : names) out.push_back({n, "driver", "1.0", "1.3", ""});
   return out;
 }
 

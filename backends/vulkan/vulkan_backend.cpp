@@ -194,7 +194,10 @@ BackendEntry vulkanBackendEntry() {
     return translatingVulkanErrors([&] {
       VulkanInstance instance(options.validation);
       std::vector<DeviceInfo> devices;
-      for (const vk::raii::PhysicalDevice& d : instance.physicalDevices()) devices.push_back(describeDevice(d));
+      for (const vk::raii::PhysicalDevice& d : instance.physicalDevices()) {
+        devices.push_back(describeDevice(d));
+        devices.back().selectedBy = "--device " + std::to_string(devices.size() - 1);
+      }
       return devices;
     });
   };

@@ -1,0 +1,238 @@
+#include "backends/gl/gl_backend.h"
+
+#include "backends/gl/forward_programs.h"
+#include "backends/gl/gl_context.h"
+#include "backends/gl/gl_objects.h"
+#include "backends/gl/probe_in_child.h"
+#include "backends/packed_geometry.h"
+#include "lighting/gpu_packing.h"
+
+#include <cstring>
+#include <functional>
+#include <optional>
+
+namespace backends::gl {
+namespace {
+
+using ContextFactory = std::function<std::unique_ptr<GlContext>(const BackendOptions&)>;
+
+std::string glString(const GlFunctions& gl, GLenum name) {
+  const GLubyte* s = gl.glGetString(name);
+  return s ? reinterpret_cast<const char*>(s) : "";
+}
+
+// The renderer: an FBO with an RGBA32F colour and a 32-bit float depth
+// renderbuffer, the scene's geometry in one vertex and one index buffer, and
+// two uniform buffers (the frame block; the object blocks at the driver's
+// offset alignment, bound per draw with glBindBufferRange).
+class GlBackend final : public Backend {
+ public:
+  GlBackend(const ContextFactory& makeContext, const BackendOptions& options)
+      : options_(options), context_(makeContext(options)) {
+    gl_ = GlFunctions::load([this](const char* name) { return context_->getProcAddress(name); });
+    info_.name = glString(gl_, GL_RENDERER);
+    info_.driver = glString(gl_, GL_VENDOR);
+    info_.driverVersion = glString(gl_, GL_VERSION);
+    info_.apiVersion = "GLSL " + glString(gl_, GL_SHADING_LANGUAGE_VERSION);
+    // Mesa picks its driver once per process; say so rather than run another.
+    const std::string wanted = options.device.empty() || !options.driver.empty() ? requestedMesaDriver(options) : "";
+    if (!wanted.empty() && info_.name.find(wanted) == std::string::npos)
+      throw NotSupportedError("asked for Mesa's " + wanted + " but the context runs on '" + info_.name +
+                              "' (the driver is missing, or another was already loaded in this process)");
+    programs_.emplace(gl_);
+    gl_.check("creating the context");
+  }
+
+  DeviceInfo device() const override { return info_; }
+
+  void preparePipeline(const lighting::Frame& frame) override {
+    programs_->program(shaders::constantValues(frame.features, options_.variant));
+  }
+
+  void draw(const lighting::Frame& frame) override {
+    const GLuint program = programs_->program(shaders::constantValues(frame.features, options_.variant));
+    ensureTarget(frame.scene().image.width, frame.scene().image.height);
+    ensureGeometry(frame);
+    writeUniforms(frame);
+
+    gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    gl_.glViewport(0, 0, width_, height_);
+    // SPEC 1: depth LESS, back faces culled. OpenGL's window y points up like
+    // lighting::CameraView's NDC, so the meshes' counter-clockwise front
+    // faces stay counter-clockwise; SPIRV-Cross mapped clip z to -1..1.
+    gl_.glEnable(GL_DEPTH_TEST);
+    gl_.glDepthFunc(GL_LESS);
+    gl_.glDepthMask(GL_TRUE);
+    gl_.glEnable(GL_CULL_FACE);
+    gl_.glCullFace(GL_BACK);
+    gl_.glFrontFace(GL_CCW);
+    gl_.glDisable(GL_BLEND);
+    const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // value 0 (SPEC 6), alpha 1 (SPEC 8)
+    const float farDepth = 1.0f;
+    gl_.glClearBufferfv(GL_COLOR, 0, background);
+    gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+
+    gl_.glUseProgram(program);
+    gl_.glBindVertexArray(vertexArray_.get());
+    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.get(), 0,
+                          sizeof(lighting::GpuFrameBlock));
+    for (std::size_t o = 0; o < objects_.size(); ++o) {
+      const ObjectRange& range = objects_[o];
+      if (range.indexCount == 0) continue;
+      gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kObjectBlockBinding, objectUniforms_.get(),
+                            GLintptr(o * objectStride_), sizeof(lighting::GpuObjectBlock));
+      gl_.glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
+                                   reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)),
+                                   range.vertexOffset);
+    }
+    gl_.glBindVertexArray(0);
+    gl_.glFinish();  // draw() returns when the image is complete, as on Vulkan
+    gl_.check(("drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath).c_str());
+    drawn_ = true;
+  }
+
+  // OpenGL's row 0 is the bottom of the image; rows are flipped here so that
+  // row 0 is the top (SPEC 1).
+  imaging::Image readback() override {
+    if (!drawn_) throw DriverError("readback() before any draw()");
+    imaging::Image image(width_, height_, 4);
+    std::vector<float> rows(image.pixels.size());
+    gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    gl_.glReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
+    gl_.check("reading the image back");
+    const std::size_t rowFloats = std::size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+      std::memcpy(&image.pixels[std::size_t(y) * rowFloats], &rows[std::size_t(height_ - 1 - y) * rowFloats],
+                  rowFloats * sizeof(float));
+    return image;
+  }
+
+ private:
+  void ensureTarget(int width, int height) {
+    if (framebuffer_.get() && width == width_ && height == height_) return;
+    width_ = width;
+    height_ = height;
+    color_ = makeRenderbuffer(gl_);
+    gl_.glBindRenderbuffer(GL_RENDERBUFFER, color_.get());
+    gl_.glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, width, height);
+    depth_ = makeRenderbuffer(gl_);
+    gl_.glBindRenderbuffer(GL_RENDERBUFFER, depth_.get());
+    gl_.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    framebuffer_ = makeFramebuffer(gl_);
+    gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    gl_.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.get());
+    gl_.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
+    const GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
+    gl_.glDrawBuffers(1, &drawBuffer);
+    const GLenum status = gl_.glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+      throw NotSupportedError("the GL driver cannot render to RGBA32F with a 32-bit float depth buffer (status 0x" +
+                              std::to_string(status) + ")");
+    gl_.check("creating the RGBA32F framebuffer");
+  }
+
+  void ensureGeometry(const lighting::Frame& frame) {
+    if (scene_ == frame.prepared) return;
+    const PackedGeometry packed = packGeometry(*frame.prepared);
+    vertexArray_ = makeVertexArray(gl_);
+    vertices_ = makeBuffer(gl_);
+    indices_ = makeBuffer(gl_);
+    gl_.glBindVertexArray(vertexArray_.get());
+    gl_.glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
+    gl_.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(packed.vertices.size() * sizeof(lighting::GpuVertex)),
+                     packed.vertices.data(), GL_STATIC_DRAW);
+    gl_.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.get());
+    gl_.glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(packed.indices.size() * sizeof(std::uint32_t)),
+                     packed.indices.data(), GL_STATIC_DRAW);
+    // Locations 0 and 1, as forward.vert declares them.
+    gl_.glEnableVertexAttribArray(0);
+    gl_.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(lighting::GpuVertex),
+                              reinterpret_cast<const void*>(offsetof(lighting::GpuVertex, position)));
+    gl_.glEnableVertexAttribArray(1);
+    gl_.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(lighting::GpuVertex),
+                              reinterpret_cast<const void*>(offsetof(lighting::GpuVertex, normal)));
+    gl_.glBindVertexArray(0);
+    objects_ = packed.objects;
+    scene_ = frame.prepared;
+    gl_.check("uploading the scene's geometry");
+  }
+
+  void writeUniforms(const lighting::Frame& frame) {
+    if (!frameUniforms_.get()) {
+      frameUniforms_ = makeBuffer(gl_);
+      objectUniforms_ = makeBuffer(gl_);
+      GLint alignment = 256;
+      gl_.glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+      objectStride_ = (sizeof(lighting::GpuObjectBlock) + std::size_t(alignment) - 1) / std::size_t(alignment) *
+                      std::size_t(alignment);
+    }
+    const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame);
+    gl_.glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.get());
+    gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
+    std::vector<unsigned char> objects(std::max<std::size_t>(objects_.size(), 1) * objectStride_);
+    for (std::size_t o = 0; o < objects_.size(); ++o) {
+      const lighting::GpuObjectBlock object = lighting::packObjectBlock(frame, int(o));
+      std::memcpy(&objects[o * objectStride_], &object, sizeof(object));
+    }
+    gl_.glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.get());
+    gl_.glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(objects.size()), objects.data(), GL_DYNAMIC_DRAW);
+    gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    gl_.check("writing the uniform buffers");
+  }
+
+  BackendOptions options_;
+  DeviceInfo info_;
+  std::unique_ptr<GlContext> context_;  // first in, last out: GL objects below die while it is current
+  GlFunctions gl_;
+  std::optional<ForwardPrograms> programs_;
+  GlName color_, depth_, framebuffer_;
+  GlName vertexArray_, vertices_, indices_;
+  GlName frameUniforms_, objectUniforms_;
+  std::size_t objectStride_ = 0;
+  std::vector<ObjectRange> objects_;
+  std::shared_ptr<const lighting::PreparedScene> scene_;
+  int width_ = 0, height_ = 0;
+  bool drawn_ = false;
+};
+
+// `lightcts backends`: each Mesa driver is tried in a child process, since
+// Mesa loads one driver per process.
+std::vector<DeviceInfo> listDrivers(const ContextFactory& makeContext, const BackendOptions& options) {
+  std::vector<DeviceInfo> devices;
+  std::string reasons;
+  for (const std::string driver : {"llvmpipe", "softpipe"}) {
+    if (!options.driver.empty() && options.driver != driver) continue;
+    BackendOptions probe = options;
+    probe.driver = driver;
+    const ProbeResult result = probeInChild([&] { return GlBackend(makeContext, probe).device(); });
+    if (result.device) {
+      DeviceInfo info = *result.device;
+      info.driver = driver + " (" + info.driver + ")";
+      info.selectedBy = "--driver " + driver;
+      devices.push_back(info);
+    } else {
+      reasons += (reasons.empty() ? "" : "; ") + driver + ": " + result.error;
+    }
+  }
+  if (devices.empty()) throw NotSupportedError(reasons);
+  return devices;
+}
+
+BackendEntry entryFor(const std::string& name, ContextFactory makeContext) {
+  BackendEntry entry;
+  entry.name = name;
+  entry.listDevices = [makeContext](const BackendOptions& options) { return listDrivers(makeContext, options); };
+  entry.create = [makeContext](const BackendOptions& options) -> std::unique_ptr<Backend> {
+    return std::make_unique<GlBackend>(makeContext, options);
+  };
+  return entry;
+}
+
+}  // namespace
+
+BackendEntry eglBackendEntry() { return entryFor("gl-egl", createEglContext); }
+BackendEntry osmesaBackendEntry() { return entryFor("gl-osmesa", createOsmesaContext); }
+
+}  // namespace backends::gl

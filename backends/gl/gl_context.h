@@ -1,0 +1,31 @@
+// A current OpenGL 3.3 core context, whatever API made it (EGL or OSMesa), and
+// the choice of Mesa's software driver made before it is created.
+#pragma once
+
+#include "backends/backend.h"
+
+#include <memory>
+#include <string>
+
+namespace backends::gl {
+
+class GlContext {
+ public:
+  virtual ~GlContext() = default;
+  // The address of a GL function in this context, or null.
+  virtual void* getProcAddress(const char* name) const = 0;
+};
+
+// Which Mesa driver (GALLIUM_DRIVER) a GL backend is to run on: `--driver`,
+// llvmpipe when absent. Set before the context is created, since Mesa reads
+// the environment when it loads the driver.
+std::string requestedMesaDriver(const BackendOptions& options);
+void selectMesaDriver(const std::string& driver);
+
+// EGL: surfaceless platform with Mesa's software driver; with `--device`,
+// the EGL device platform and the device that index or name substring picks.
+std::unique_ptr<GlContext> createEglContext(const BackendOptions& options);
+// OSMesa: off-screen Mesa, always a software driver.
+std::unique_ptr<GlContext> createOsmesaContext(const BackendOptions& options);
+
+}  // namespace backends::gl

@@ -1,0 +1,32 @@
+#include "backends/gl/gl_objects.h"
+
+namespace backends::gl {
+namespace {
+
+// glGen* and glDelete* share one shape: (count, names).
+template <class Generate, class Delete>
+GlName makeName(const GlFunctions& gl, Generate generate, Delete destroy) {
+  GLuint name = 0;
+  (gl.*generate)(1, &name);
+  return GlName(name, [&gl, destroy](GLuint n) { (gl.*destroy)(1, &n); });
+}
+
+}  // namespace
+
+GlName makeBuffer(const GlFunctions& gl) {
+  return makeName(gl, &GlFunctions::glGenBuffers, &GlFunctions::glDeleteBuffers);
+}
+
+GlName makeVertexArray(const GlFunctions& gl) {
+  return makeName(gl, &GlFunctions::glGenVertexArrays, &GlFunctions::glDeleteVertexArrays);
+}
+
+GlName makeFramebuffer(const GlFunctions& gl) {
+  return makeName(gl, &GlFunctions::glGenFramebuffers, &GlFunctions::glDeleteFramebuffers);
+}
+
+GlName makeRenderbuffer(const GlFunctions& gl) {
+  return makeName(gl, &GlFunctions::glGenRenderbuffers, &GlFunctions::glDeleteRenderbuffers);
+}
+
+}  // namespace backends::gl

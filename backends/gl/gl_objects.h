@@ -1,0 +1,47 @@
+// RAII for GL object names: each owns one name and deletes it with the
+// function given, while the context that made it is still current (the
+// backend declares its objects after its context, so they go first).
+#pragma once
+
+#include "backends/gl/gl_functions.h"
+
+#include <functional>
+#include <utility>
+
+namespace backends::gl {
+
+class GlName {
+ public:
+  GlName() = default;
+  GlName(GLuint name, std::function<void(GLuint)> destroy) : name_(name), destroy_(std::move(destroy)) {}
+  ~GlName() { reset(); }
+  GlName(GlName&& other) noexcept : name_(std::exchange(other.name_, 0)), destroy_(std::move(other.destroy_)) {}
+  GlName& operator=(GlName&& other) noexcept {
+    if (this != &other) {
+      reset();
+      name_ = std::exchange(other.name_, 0);
+      destroy_ = std::move(other.destroy_);
+    }
+    return *this;
+  }
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+
+  GLuint get() const { return name_; }
+  void reset() {
+    if (name_ && destroy_) destroy_(name_);
+    name_ = 0;
+  }
+
+ private:
+  GLuint name_ = 0;
+  std::function<void(GLuint)> destroy_;
+};
+
+// One object of each kind the renderer uses.
+GlName makeBuffer(const GlFunctions& gl);
+GlName makeVertexArray(const GlFunctions& gl);
+GlName makeFramebuffer(const GlFunctions& gl);
+GlName makeRenderbuffer(const GlFunctions& gl);
+
+}  // namespace backends::gl
