@@ -5,15 +5,12 @@
 // driver); a skip when either backend is not here.
 #include "backends/backend.h"
 #include "backends/tests/backend_combinations.h"
-#include "lighting/frame.h"
-#include "lighting/scene_loader.h"
-#include "reference/reference_renderer.h"
+#include "backends/tests/suite_scene_renders.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 namespace {
 
@@ -28,31 +25,26 @@ TEST_P(GlAgreesWithVulkan, OnEveryScene) {
   const auto gl = backends::testing::createOrNull(GetParam(), whyNot);
   if (!gl) GTEST_SKIP() << whyNot;
 
-  int scenes = 0;
-  for (const auto& group : std::filesystem::directory_iterator(LIGHTCTS_SCENES_DIR))
-    for (const auto& file : std::filesystem::directory_iterator(group.path())) {
-      const auto prepared = lighting::prepareScene(lighting::loadSceneFile(file.path().string()));
-      const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
-      const imaging::Image a = vulkan->render(frame);
-      const imaging::Image b = gl->render(frame);
-      const reference::ReferenceImages ref = reference::ReferenceRenderer(prepared).render(frame);
-      ASSERT_EQ(a.width, b.width);
-      ASSERT_EQ(a.height, b.height);
-      long long differing = 0;
-      double largestRatio = 0;
-      for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x) {
-          if (ref.value.at(x, y, 3) == 0.0f) continue;  // don't care (SPEC 6 mask)
-          for (int c = 0; c < 3; ++c) {
-            const double difference = std::abs(double(a.at(x, y, c)) - double(b.at(x, y, c)));
-            const double allowed = 2.0 * ref.tolerance.at(x, y, c);
-            if (!(difference <= allowed)) ++differing;
-            if (allowed > 0) largestRatio = std::max(largestRatio, difference / allowed);
+  const int scenes = backends::testing::forEachSuiteScene(
+      LIGHTCTS_SCENES_DIR, *vulkan, *gl, [](const backends::testing::SceneRenders& r) {
+        const imaging::Image& a = r.first;
+        const imaging::Image& b = r.second;
+        ASSERT_EQ(a.width, b.width);
+        ASSERT_EQ(a.height, b.height);
+        long long differing = 0;
+        double largestRatio = 0;
+        for (int y = 0; y < a.height; ++y)
+          for (int x = 0; x < a.width; ++x) {
+            if (r.reference.value.at(x, y, 3) == 0.0f) continue;  // don't care (SPEC 6 mask)
+            for (int c = 0; c < 3; ++c) {
+              const double difference = std::abs(double(a.at(x, y, c)) - double(b.at(x, y, c)));
+              const double allowed = 2.0 * r.reference.tolerance.at(x, y, c);
+              if (!(difference <= allowed)) ++differing;
+              if (allowed > 0) largestRatio = std::max(largestRatio, difference / allowed);
+            }
           }
-        }
-      EXPECT_EQ(differing, 0) << file.path() << ": largest difference / allowed " << largestRatio;
-      ++scenes;
-    }
+        EXPECT_EQ(differing, 0) << r.file << ": largest difference / allowed " << largestRatio;
+      });
   EXPECT_GE(scenes, 16);
 }
 

@@ -2,6 +2,7 @@
 // choice, that validation messages fail a render, the readback's orientation,
 // and that the specialised pipeline draws what the full one draws.
 #include "backends/backend.h"
+#include "backends/tests/suite_scene_renders.h"
 #include "backends/vulkan/vulkan_device.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
@@ -115,22 +116,16 @@ TEST(VulkanSpecialisation, SpecialisedAndFullShadersAgreeOnEveryScene) {
   fullOptions.variant.specialised = false;
   auto full = createOrSkip(fullOptions);
   if (!specialised || !full) GTEST_SKIP() << "no Vulkan device";
-  int scenes = 0;
-  for (const auto& group : std::filesystem::directory_iterator(LIGHTCTS_SCENES_DIR))
-    for (const auto& file : std::filesystem::directory_iterator(group.path())) {
-      const auto prepared = lighting::prepareScene(lighting::loadSceneFile(file.path().string()));
-      const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
-      const imaging::Image a = specialised->render(frame);
-      const imaging::Image b = full->render(frame);
-      const reference::ReferenceImages ref = reference::ReferenceRenderer(prepared).render(frame);
-      long long differing = 0;
-      for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x)
-          for (int c = 0; c < 3; ++c)
-            if (!(std::abs(a.at(x, y, c) - b.at(x, y, c)) <= ref.tolerance.at(x, y, c))) ++differing;
-      EXPECT_EQ(differing, 0) << file.path();
-      ++scenes;
-    }
+  const int scenes = backends::testing::forEachSuiteScene(
+      LIGHTCTS_SCENES_DIR, *specialised, *full, [](const backends::testing::SceneRenders& r) {
+        long long differing = 0;
+        for (int y = 0; y < r.first.height; ++y)
+          for (int x = 0; x < r.first.width; ++x)
+            for (int c = 0; c < 3; ++c)
+              if (!(std::abs(r.first.at(x, y, c) - r.second.at(x, y, c)) <= r.reference.tolerance.at(x, y, c)))
+                ++differing;
+        EXPECT_EQ(differing, 0) << r.file;
+      });
   EXPECT_GE(scenes, 15);
 }
 

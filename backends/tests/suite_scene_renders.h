@@ -1,0 +1,41 @@
+// Every suite scene (frame 0) rendered on two backends, with its reference:
+// the loop the tests that compare two backends, or two variants of one, share.
+#pragma once
+
+#include "backends/backend.h"
+#include "lighting/frame.h"
+#include "lighting/scene_loader.h"
+#include "reference/reference_renderer.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+namespace backends::testing {
+
+struct SceneRenders {
+  std::filesystem::path file;
+  imaging::Image first;
+  imaging::Image second;
+  reference::ReferenceImages reference;
+};
+
+// Calls `check` once per scene file under `scenesDir`, in name order, and
+// returns how many there were.
+inline int forEachSuiteScene(const std::filesystem::path& scenesDir, Backend& first, Backend& second,
+                             const std::function<void(const SceneRenders&)>& check) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& group : std::filesystem::directory_iterator(scenesDir))
+    for (const auto& file : std::filesystem::directory_iterator(group.path()))
+      if (file.path().extension() == ".json") files.push_back(file.path());
+  std::sort(files.begin(), files.end());
+  for (const std::filesystem::path& file : files) {
+    const auto prepared = lighting::prepareScene(lighting::loadSceneFile(file.string()));
+    const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
+    check({file, first.render(frame), second.render(frame), reference::ReferenceRenderer(prepared).render(frame)});
+  }
+  return int(files.size());
+}
+
+}  // namespace backends::testing
