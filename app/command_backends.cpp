@@ -31,16 +31,4 @@ int runBackendsCommand(std::ostream& out, std::ostream& err) {
   });
 }
 
-int runSuiteCommand(const std::vector<std::string>& names, const std::string&, const std::string&, std::ostream&,
-                    std::ostream& err) {
-  return guardCommand(err, [&] {
-    for (const std::string& name : names) {
-      int status = kExitSuccess;
-      if (!resolveBackend(name, err, status) && status == kExitBadInput) return status;
-    }
-    err << "lightcts: run: the whole-suite runner is not supported by this build yet (NotSupported)\n";
-    return kExitNotSupported;
-  });
-}
-
 }  // namespace app

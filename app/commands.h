@@ -3,6 +3,8 @@
 // `err` with a message a user can act on.
 #pragma once
 
+#include "runner/suite_run.h"
+
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@ namespace app {
 struct SceneArguments {
   std::string scenePath;
   int frame = 0;
+  bool frameGiven = false;  // compare: false checks every frame of an animated scene
 };
 
 int runBackendsCommand(std::ostream& out, std::ostream& err);
@@ -29,6 +32,9 @@ struct BackendArguments {
   // on whatever the scene uses.
   std::string mutant = "none";
   bool fullShader = false;
+  // --expect-driver (docs/vendors.md): the loaded device's name, driver or
+  // driver version must contain this text, or the command fails (exit 4).
+  std::string expectDriver{};
 };
 int runRenderCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& outFile,
                      std::ostream& out, std::ostream& err);
@@ -36,7 +42,10 @@ int runRenderCommand(const SceneArguments& args, const BackendArguments& backend
 // lightcts-evidence/<group>.<name>.<backend> under the current folder.
 int runCompareCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& evidenceDir,
                       std::ostream& out, std::ostream& err);
-int runSuiteCommand(const std::vector<std::string>& backends, const std::string& scenesDir,
-                    const std::string& outDir, std::ostream& out, std::ostream& err);
+// `run` checks its options (unknown backend or mutant, bad scene: exit 2)
+// before any worker starts.
+int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::ostream& err);
+// The hidden `lightcts worker` command that `run` starts (runner/suite_worker.h).
+int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, std::ostream& err);
 
 }  // namespace app

@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
   app::BackendArguments backend;
   std::string out;
   bool ideal = false;
-  std::vector<std::string> suiteBackends;
-  std::string scenesDir = "suite/scenes";
+  runner::RunOptions run;
+  std::string workerPlan;
+  int workerStart = 0;
 
   auto addScene = [&](CLI::App* sub, bool withFrame) {
     sub->add_option("--scene", scene.scenePath, "Scene file (SPEC 2)")->required();
@@ -32,6 +33,8 @@ int main(int argc, char** argv) {
     sub->add_option("--mutant", backend.mutant, "Test only: a deliberately wrong variant of the model")
         ->default_val("none");
     sub->add_flag("--full-shader", backend.fullShader, "Test only: every shader feature on, whatever the scene uses");
+    sub->add_option("--expect-driver", backend.expectDriver,
+                    "Fail (exit 4) unless the loaded device's name, driver or version contains this text");
   };
 
   auto* backendsCmd = cli.add_subcommand("backends", "List backends, drivers and devices");
@@ -52,9 +55,27 @@ int main(int argc, char** argv) {
   compareCmd->add_option("--evidence", evidenceDir,
                          "Folder for the evidence of a failure (default: lightcts-evidence/<group>.<name>.<backend>)");
   auto* runCmd = cli.add_subcommand("run", "Run the whole suite: results.json, junit.xml, report/index.html");
-  runCmd->add_option("--backend", suiteBackends, "Backends to run (default: every one present)");
-  runCmd->add_option("--scenes", scenesDir, "Scene folder")->default_val("suite/scenes");
-  runCmd->add_option("--out", out, "Output folder")->required();
+  runCmd->add_option("--backend", run.backends,
+                     "Backends to run: vulkan, gl-egl, gl-osmesa (each of its drivers), or one combination: "
+                     "gl-egl-softpipe, gl-osmesa-softpipe (default: every one present)");
+  runCmd->add_option("--scenes", run.scenesDir, "Scene folder: <group>/<name>.json, or one group's folder")
+      ->default_val("suite/scenes");
+  runCmd->add_option("--out", run.outDir, "Output folder")->required();
+  runCmd->add_option("--device", run.device, "Device index or name substring, for every backend");
+  runCmd->add_option("--expect-driver", run.expectDriver,
+                     "Every backend's device name, driver or version must contain this text (docs/vendors.md)");
+  runCmd->add_option("--expected-failures", run.expectedFailureFiles,
+                     "Baseline of known failures, 'test,Status  # reason' lines (docs/vendors.md)");
+  runCmd->add_option("--timeout", run.timeoutSeconds, "Seconds one test may take before it is a Timeout")
+      ->default_val(120);
+  runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
+  runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
+  runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
+  // Started by `run` only: one backend combination's tests, results as JSON lines.
+  auto* workerCmd = cli.add_subcommand("worker", "");
+  workerCmd->group("");
+  workerCmd->add_option("--plan", workerPlan)->required();
+  workerCmd->add_option("--start", workerStart)->default_val(0);
 
   try {
     cli.parse(argc, argv);
@@ -73,7 +94,13 @@ int main(int argc, char** argv) {
   if (*lightsCmd) return app::runLightsCommand(scene, o, e);
   if (*referenceCmd) return app::runReferenceCommand(scene, ideal, out, o, e);
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
+  scene.frameGiven = compareCmd->get_option("--frame")->count() > 0;
   if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);
-  if (*runCmd) return app::runSuiteCommand(suiteBackends, scenesDir, out, o, e);
+  if (*runCmd) {
+    run.workerExecutable = "/proc/self/exe";
+    for (int i = 0; i < argc; ++i) run.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return app::runSuiteCommand(run, o, e);
+  }
+  if (*workerCmd) return app::runWorkerCommand(workerPlan, workerStart, o, e);
   return app::kExitBadInput;
 }

@@ -1,6 +1,7 @@
 #include "comparison/comparison_report.h"
 
 #include "imaging/image_files.h"
+#include "imaging/text_file.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -9,7 +10,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <vector>
 
@@ -82,21 +82,6 @@ void writeErrorMask(const fs::path& target, const imaging::Image& mask) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
     throw imaging::ImageFileError("cannot write " + target.string() + ": " + message);
-  }
-  renameIntoPlace(temporary, target);
-}
-
-void writeText(const fs::path& target, const std::string& text) {
-  const fs::path temporary = partialPath(target);
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    file << text;
-    file.close();
-    if (!file) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + target.string());
-    }
   }
   renameIntoPlace(temporary, target);
 }
@@ -180,7 +165,7 @@ void writeEvidence(const std::string& dir, const Comparison& comparison, const i
   imaging::writePngPreview(path("result.png"), result);
   imaging::writePngPreview(path("reference.png"), reference.value);
   writeErrorMask(folder / "error-mask.png", comparison.errorMask);
-  writeText(folder / "summary.json", comparisonJson(comparison, testName).dump(2) + "\n");
+  imaging::writeFileAtomically(folder / "summary.json", comparisonJson(comparison, testName).dump(2) + "\n");
 }
 
 }  // namespace comparison

@@ -16,17 +16,19 @@ GpuMat4 mat4(const glm::dmat4& m) {
   return out;
 }
 
-GpuLight packLight(const Frame& frame, int lightIndex) {
+// `weight`: the light's fade weight (lighting/light_fade.h); it scales
+// finalColor in double before the one rounding to float.
+GpuLight packLight(const Frame& frame, int lightIndex, double weight) {
   const Scene& scene = frame.scene();
   const Light& light = scene.lights[lightIndex];
   GpuLight g;
   const bool directional = light.type == LightType::Directional;
   if (directional) {
     g.position = vec4(-light.direction, 0.0);
-    g.color = vec4(light.finalColor(), 0.0);
+    g.color = vec4(light.finalColor() * weight, 0.0);
   } else {
     g.position = vec4(light.position - frame.view.camera.position, 1.0);
-    g.color = vec4(light.finalColor(), inverseRangeSquared(light.range));
+    g.color = vec4(light.finalColor() * weight, inverseRangeSquared(light.range));
   }
   g.spotDirection = vec4(-light.direction, 0.0);
   const SpotFactors spot = lightSpotFactors(light, scene.pipeline.profile);
@@ -42,13 +44,14 @@ GpuFrameBlock packFrameBlock(const Frame& frame) {
   GpuFrameBlock block;
   block.viewProjection = mat4(frame.view.cameraRelativeViewProjection());
   block.ambient = vec4(frame.scene().ambient, 0.0);
+  block.cameraPosition = vec4(frame.view.camera.position, 0.0);  // test-only (absolute-coordinates mutant)
   const PackedLights& packed = frame.selection.packed;
   const bool legacy = frame.scene().pipeline.profile == Profile::Legacy;
   block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, 0};
   for (std::size_t i = 0; i < packed.directional.size(); ++i)
-    block.directionalLights[i] = packLight(frame, packed.directional[i]);
+    block.directionalLights[i] = packLight(frame, packed.directional[i], packed.directionalWeight[i]);
   for (std::size_t i = 0; i < packed.other.size(); ++i)
-    block.otherLights[i] = packLight(frame, packed.other[i]);
+    block.otherLights[i] = packLight(frame, packed.other[i], packed.otherWeight[i]);
   return block;
 }
 

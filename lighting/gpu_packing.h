@@ -48,8 +48,12 @@ struct GpuFrameBlock {
   GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind), z: 1 for the legacy profile
   GpuLight directionalLights[kGpuMaxDirectionalLights];
   GpuLight otherLights[kGpuMaxOtherLights];
+  // xyz: the camera position rounded to float; w: unused. The model never
+  // reads it (positions are camera-relative); only the test-only
+  // absolute-coordinates mutant (shaders/mutants.glsl) does.
+  GpuVec4 cameraPosition;
 };
-static_assert(sizeof(GpuFrameBlock) == 4448);
+static_assert(sizeof(GpuFrameBlock) == 4464);
 
 // Binding 1: per object.
 struct GpuObjectBlock {

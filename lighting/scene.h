@@ -89,6 +89,9 @@ struct Pipeline {
   RenderPath path = RenderPath::Forward;
   bool lightsPerObject = false;
   DeferredBuffer deferredBuffer = DeferredBuffer::Hdr32;
+  // Extension (docs/model.md, popping mitigation): the last this-many kept
+  // point/spot lights fade out toward the cut; 0 is the plain cut of SPEC 5.1.
+  int fadeLastLights = 0;
 };
 
 struct CameraKeyframe {

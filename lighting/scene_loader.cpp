@@ -4,6 +4,7 @@
 #include "lighting/scene_loader.h"
 
 #include "lighting/json_locations.h"
+#include "lighting/visible_lights.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -157,8 +158,8 @@ constexpr std::array<std::string_view, 7> kPerspectiveKeys{"position",  "target"
                                                            "fov_y_deg", "near",   "far"};
 constexpr std::array<std::string_view, 7> kOrthographicKeys{"position", "target", "up", "projection",
                                                             "height",   "near",   "far"};
-constexpr std::array<std::string_view, 4> kPipelineKeys{"profile", "path", "lights_per_object",
-                                                        "deferred_buffer"};
+constexpr std::array<std::string_view, 5> kPipelineKeys{"profile", "path", "lights_per_object",
+                                                        "deferred_buffer", "fade_last_lights"};
 constexpr std::array<std::string_view, 6> kObjectKeys{"name",     "mesh",   "transform",
                                                       "material", "static", "lightmap_resolution"};
 constexpr std::array<std::string_view, 6> kMeshKeys{"type", "size", "subdivisions", "radius", "segments", "rings"};
@@ -466,6 +467,18 @@ class SceneReader {
     if (auto path = member(node, "path")) pipeline.path = readChoice(*path, kRenderPaths);
     if (auto perObject = member(node, "lights_per_object")) pipeline.lightsPerObject = readBool(*perObject);
     if (auto buffer = member(node, "deferred_buffer")) pipeline.deferredBuffer = readChoice(*buffer, kDeferredBuffers);
+    // Extension (docs/model.md): at most the profile's budget of point/spot
+    // lights can fade; the profile may come after this key, so it is read first.
+    if (auto fade = member(node, "fade_last_lights")) {
+      const bool legacy = pipeline.profile == Profile::Legacy;
+      const int most = legacy ? kLegacyMaxLights : kSrpMaxOtherLights;
+      const int count = readInt(*fade, 0, kSrpMaxOtherLights);
+      if (count > most) {
+        fail(*fade, "expected an integer in [0, " + std::to_string(most) + "] (the legacy profile keeps " +
+                        std::to_string(most) + " lights), got " + std::to_string(count));
+      }
+      pipeline.fadeLastLights = count;
+    }
     return pipeline;
   }
 

@@ -6,8 +6,13 @@ nlohmann::ordered_json selectionToJson(const Frame& frame) {
   const Scene& scene = frame.scene();
   using Json = nlohmann::ordered_json;
   Json visible = Json::array();
-  for (const VisibleLight& v : frame.selection.visible)
-    visible.push_back(Json{{"light", v.light}, {"name", scene.lights[v.light].name}, {"packed", v.packed}});
+  // "weight" only when the scene fades (docs/model.md); otherwise SPEC 5.4 exactly.
+  const bool fading = scene.pipeline.fadeLastLights > 0;
+  for (const VisibleLight& v : frame.selection.visible) {
+    Json entry{{"light", v.light}, {"name", scene.lights[v.light].name}, {"packed", v.packed}};
+    if (fading) entry["weight"] = v.weight;
+    visible.push_back(std::move(entry));
+  }
 
   Json objects = Json::array();
   for (std::size_t i = 0; i < frame.objectLists.size(); ++i) {

@@ -1,10 +1,12 @@
 #include "lighting/visible_lights.h"
 
+#include "lighting/light_fade.h"
 #include "lighting/light_math.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace lighting {
 
@@ -54,7 +56,44 @@ LightSelection selectVisibleLights(const Scene& scene, const CameraView& view,
     for (int i : directional) keep(i, selection.packed.other, kLegacyMaxLights);
     for (int i : other) keep(i, selection.packed.other, kLegacyMaxLights);
   }
+
+  // Fade weights (lighting/light_fade.h): directional lights keep 1 (their
+  // order does not depend on the camera); the kept point/spot lights fade
+  // toward the first dropped one, by squared distance.
+  std::vector<double> keptDistanceSquared;
+  std::optional<double> firstDropped;
+  for (const VisibleLight& v : selection.visible) {
+    if (scene.lights[v.light].type == LightType::Directional) continue;
+    if (v.packed >= 0) {
+      keptDistanceSquared.push_back(distanceSquared(v.light));
+    } else if (!firstDropped) {
+      firstDropped = distanceSquared(v.light);
+    }
+  }
+  const std::vector<double> fade = fadeWeights(keptDistanceSquared, firstDropped, scene.pipeline.fadeLastLights);
+  std::size_t nextFade = 0;
+  for (VisibleLight& v : selection.visible) {
+    if (v.packed < 0) {
+      v.weight = 0.0;
+    } else if (scene.lights[v.light].type != LightType::Directional) {
+      v.weight = fade[nextFade++];
+    }
+  }
+  selection.packed.directionalWeight.assign(selection.packed.directional.size(), 1.0);
+  selection.packed.otherWeight.assign(selection.packed.other.size(), 1.0);
+  for (const VisibleLight& v : selection.visible) {
+    if (v.packed < 0) continue;
+    const bool directionalArray =
+        scene.pipeline.profile == Profile::Srp && scene.lights[v.light].type == LightType::Directional;
+    (directionalArray ? selection.packed.directionalWeight : selection.packed.otherWeight)[v.packed] = v.weight;
+  }
   return selection;
+}
+
+std::vector<double> LightSelection::weightsBySceneLight(std::size_t sceneLightCount) const {
+  std::vector<double> weights(sceneLightCount, 0.0);
+  for (const VisibleLight& v : visible) weights[v.light] = v.weight;
+  return weights;
 }
 
 }  // namespace lighting

@@ -12,12 +12,13 @@ namespace reference {
 using namespace lighting;
 namespace tol = tolerance;
 
-LightEvaluator::LightEvaluator(const Scene& scene, Profile profile) {
+LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::vector<double>& weights) {
   lights_.reserve(scene.lights.size());
-  for (const Light& l : scene.lights) {
+  for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+    const Light& l = scene.lights[i];
     Prepared p;
     p.directional = l.type == LightType::Directional;
-    p.finalColor = l.finalColor();
+    p.finalColor = l.finalColor() * (weights.empty() ? 1.0 : weights[i]);
     p.position = l.position;
     p.towardLight = -l.direction;
     p.spotDirection = -l.direction;  // spotDir points back toward the light (SPEC 3.2)

@@ -26,7 +26,11 @@ struct PositionContext {
 
 class LightEvaluator {
  public:
-  LightEvaluator(const lighting::Scene& scene, lighting::Profile profile);
+  // `weights`: a factor on each scene light's finalColor (the fade weights of
+  // lighting/light_fade.h, LightSelection::weightsBySceneLight); empty: all 1,
+  // as for `--ideal`. The factor is exact in the model (the packed data holds
+  // float(finalColor * weight)), so the error bound scales with it.
+  LightEvaluator(const lighting::Scene& scene, lighting::Profile profile, const std::vector<double>& weights = {});
 
   // Adds the contributions of `lights` (scene indices) at p with unit normal N.
   void accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
@@ -35,7 +39,7 @@ class LightEvaluator {
  private:
   struct Prepared {
     bool directional = false;
-    Vec3 finalColor{0.0};
+    Vec3 finalColor{0.0};  // times the light's weight
     Vec3 position{0.0};
     Vec3 towardLight{0.0};  // directional: L = -direction
     Vec3 spotDirection{0.0};

@@ -44,7 +44,12 @@ struct FrameShading {
   std::vector<Vec3> vertexBound;
 
   FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, bool ideal)
-      : frame(f), world(w), bvh(b), evaluator(f.scene(), f.scene().pipeline.profile) {
+      : frame(f),
+        world(w),
+        bvh(b),
+        // The fade weights are part of the budgets: `--ideal` has neither.
+        evaluator(f.scene(), f.scene().pipeline.profile,
+                  ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size())) {
     const auto& objects = f.prepared->objects;
     for (int o = 0; o < int(objects.size()); ++o) {
       lights.push_back(ideal ? f.idealLightsForObject() : f.lightsForObject(o));

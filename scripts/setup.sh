@@ -17,6 +17,9 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   # OpenGL on Mesa (llvmpipe and softpipe) through EGL and OSMesa
   libegl-dev libgl-dev libosmesa6-dev libgl1-mesa-dri libegl-mesa0
+  # the report test: every image of report/index.html loads in headless Chromium
+  # (about 350 MB installed; its test is skipped where it is missing)
+  chromium
 )
 
 missing=()

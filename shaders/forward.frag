@@ -30,6 +30,8 @@ void main() {
     // srp: min(count, 8) per pixel; legacy: list positions 0-3 per pixel.
     int perPixel = legacyProfile() ? kLegacyPixelLights : kMaxLightsPerObject;
     int count = min(objectData.lightList.x, perPixel);
+    // Mutant: srp's loop runs to count (objectLightIndex wraps past 8).
+    if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectData.lightList.x;
     for (int k = 0; k < count; ++k)
       light += packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask);
   } else {

@@ -11,7 +11,7 @@ layout(location = 1) in vec3 inNormal;
 
 // Varyings have the same names in both stages: GLSL 330 (the OpenGL backend,
 // via SPIRV-Cross) links stages by name, not by location.
-layout(location = 0) out vec3 vPosition;  // camera-relative world position
+layout(location = 0) out vec3 vPosition;  // camera-relative world position (absolute in the absolute-coordinates mutant)
 layout(location = 1) out vec3 vNormal;
 layout(location = 2) out vec3 vVertexLighting;
 
@@ -21,13 +21,19 @@ const int kMaxLightsPerObject = 8;
 void main() {
   vec4 position = objectData.model * vec4(inPosition, 1.0);
   vec3 N = normalize(mat3(objectData.normalMatrix) * inNormal);
-  vPosition = position.xyz;
+  // Camera-relative; absolute in the absolute-coordinates mutant.
+  vec3 worldPosition = mutantWorldPosition(position.xyz);
+  vPosition = worldPosition;
   vNormal = N;
   vVertexLighting = vec3(0.0);
   if (legacyProfile()) {
     int count = min(objectData.lightList.x, kMaxLightsPerObject);
+    if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) count = objectData.lightList.x;
+    if (MUTANT == MUTANT_LEGACY_VERTEX_LIGHTS_DROPPED) count = 0;
+    // Mutant: rotation * scale * normal, never normalised.
+    vec3 vertexNormal = MUTANT == MUTANT_VERTEX_NORMAL_NOT_NORMALISED ? mat3(objectData.model) * inNormal : N;
     for (int k = kLegacyPixelLights; k < count; ++k)
-      vVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], position.xyz, N, vec4(1.0));
+      vVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0));
   }
   gl_Position = frameData.viewProjection * position;
 }

@@ -4,6 +4,9 @@
 #ifndef LIGHTCTS_LIGHT_DATA_GLSL
 #define LIGHTCTS_LIGHT_DATA_GLSL
 
+#include "features.glsl"
+#include "mutants.glsl"
+
 struct Light {
   vec4 position;       // xyz: camera-relative position, or L = -direction; w: 1 local, 0 directional
   vec4 color;          // rgb: finalColor; w: invRangeSq
@@ -17,6 +20,7 @@ layout(std140, set = 0, binding = 0) uniform FrameBlock {
   ivec4 lightCounts;    // x: directional lights, y: other lights, z: 1 for the legacy profile
   Light directionalLights[4];
   Light otherLights[64];
+  vec4 cameraPosition;  // xyz: the camera position in float; read only by the absolute-coordinates mutant
 } frameData;
 
 layout(std140, set = 0, binding = 1) uniform ObjectBlock {
@@ -35,6 +39,8 @@ bool objectListInUse() { return PER_OBJECT_LISTS && objectData.lightList.w != 0;
 
 // The list index k of this object (0 <= k < 8).
 int objectLightIndex(int k) {
+  // Mutant: a loop that runs past 8 wraps around and applies lights again.
+  if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) k = k % 8;
   return objectData.lightIndices[k / 4][k % 4];
 }
 

@@ -6,8 +6,8 @@
 #define LIGHTCTS_LIGHTING_GLSL
 
 #include "features.glsl"
-#include "light_data.glsl"
 #include "mutants.glsl"
+#include "light_data.glsl"
 
 // SPEC 1.
 float saturate(float x) { return clamp(x, 0.0, 1.0); }
@@ -22,13 +22,32 @@ float clampedDistanceSquared(vec3 ray) {
 
 // SPEC 3.2: rangeAtt = square(saturate(1 - square(distSqr * invRangeSq))).
 float rangeAttenuation(float distSqr, float invRangeSq) {
-  return square(saturate(1.0 - square(distSqr * invRangeSq)));
+  float window = saturate(1.0 - square(distSqr * invRangeSq));
+  if (MUTANT == MUTANT_UNSQUARED_RANGE) return window;
+  return square(window);
+}
+
+// Mutant: spot factors for the full cone angle taken as the half angle. The
+// shader recovers cosOuter = -b/a and cosInner = cosOuter + 1/a (exact where
+// a was not clamped) and doubles both angles: cos(2t) = 2 cos^2(t) - 1.
+vec2 fullAngleSpotFactors(vec2 factors) {
+  if (factors.x == 0.0) return factors;  // a point light
+  float cosOuter = -factors.y / factors.x;
+  float cosInner = cosOuter + 1.0 / factors.x;
+  float cosOuterFull = 2.0 * cosOuter * cosOuter - 1.0;
+  float cosInnerFull = 2.0 * cosInner * cosInner - 1.0;
+  float a = 1.0 / max(cosInnerFull - cosOuterFull, 0.001);
+  return vec2(a, -cosOuterFull * a);
 }
 
 // SPEC 3.2 with the factors of SPEC 3.3 (a, b; the CPU applied 3.4's legacy
 // inner angle): spotAtt = square(saturate(dot(spotDir, L) * a + b)).
 float spotAttenuation(vec3 spotDirection, vec3 L, vec2 factors) {
-  return square(saturate(dot(spotDirection, L) * factors.x + factors.y));
+  if (MUTANT == MUTANT_FULL_SPOT_ANGLE) factors = fullAngleSpotFactors(factors);
+  if (MUTANT == MUTANT_SPOT_DIRECTION_FLIPPED) spotDirection = -spotDirection;
+  float cone = saturate(dot(spotDirection, L) * factors.x + factors.y);
+  if (MUTANT == MUTANT_UNSQUARED_SPOT) return cone;
+  return square(cone);
 }
 
 // SPEC 3.5: lerp(1, mask[c], strength) for a light with channel c >= 0 on an
@@ -44,18 +63,52 @@ float shadowMaskAttenuation(Light light, vec4 mask) {
 // SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask (albedo applied by the caller).
 vec3 directionalLight(Light light, vec3 N, vec4 mask) {
   vec3 L = light.position.xyz;
-  return light.color.rgb * (saturate(dot(N, L)) * shadowMaskAttenuation(light, mask));
+  float cosine = dot(N, L);
+  if (MUTANT != MUTANT_DIRECTIONAL_NOT_SATURATED) cosine = saturate(cosine);
+  return light.color.rgb * (cosine * shadowMaskAttenuation(light, mask));
 }
 
-// SPEC 3.2: point and spot lights at camera-relative position p.
+// Mutant: where the absolute-coordinates mutant puts positions, in float32:
+// absolute world coordinates (camera-relative + the camera position). The
+// model keeps them camera-relative (identity).
+vec3 mutantWorldPosition(vec3 cameraRelative) {
+  if (MUTANT == MUTANT_ABSOLUTE_COORDINATES) return cameraRelative + frameData.cameraPosition.xyz;
+  return cameraRelative;
+}
+
+// x rounded to the nearest 16-bit float (ties to even; beyond the largest
+// half, infinity), what unpackHalf2x16(packHalf2x16(x)) gives. Written out
+// because GLSL 330 (the OpenGL backend) has no packHalf2x16.
+float roundThroughHalf(float x) {
+  uint bits = floatBitsToUint(x);
+  uint sign = bits & 0x80000000u;
+  uint magnitude = bits & 0x7fffffffu;
+  float a = uintBitsToFloat(magnitude);
+  if (a >= 65520.0) magnitude = 0x7f800000u;
+  else if (a < 6.103515625e-05) magnitude = floatBitsToUint(roundEven(a * 16777216.0) / 16777216.0);  // subnormal: steps of 2^-24
+  else magnitude = (magnitude + 0x0fffu + ((magnitude >> 13) & 1u)) & ~0x1fffu;  // 10 mantissa bits
+  return uintBitsToFloat(sign | magnitude);
+}
+
+// Mutant: attenuation rounded through a 16-bit float (identity in the model).
+float mutantAttenuationPrecision(float attenuation) {
+  if (MUTANT == MUTANT_HALF_PRECISION_ATTENUATION) return roundThroughHalf(attenuation);
+  return attenuation;
+}
+
+// SPEC 3.2: point and spot lights at camera-relative position p (the
+// absolute-coordinates mutant passes absolute ones).
 vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask) {
-  vec3 ray = light.position.xyz - p;
+  vec3 ray = mutantWorldPosition(light.position.xyz) - p;
   float distSqr = clampedDistanceSquared(ray);
   vec3 L = ray * inversesqrt(distSqr);
   float attenuation = rangeAttenuation(distSqr, light.color.w) / distSqr;
   if (SPOT_LIGHTS) attenuation *= spotAttenuation(light.spotDirection.xyz, L, light.spotAngles.xy);
   attenuation *= shadowMaskAttenuation(light, mask);
-  return light.color.rgb * (saturate(dot(N, L)) * attenuation);
+  attenuation = mutantAttenuationPrecision(attenuation);
+  float cosine = dot(N, L);
+  if (MUTANT != MUTANT_LOCAL_NOT_SATURATED) cosine = saturate(cosine);
+  return light.color.rgb * (cosine * attenuation);
 }
 
 // A light of the packed `otherLights` array. In the legacy profile it holds

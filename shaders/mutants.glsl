@@ -1,10 +1,24 @@
 // Test-only mutants of the model (SPEC 7, mutation check). Each is selected by
 // the MUTANT specialization constant and never by default; the numbers are
-// shaders::Mutant (shader_variant.h).
+// shaders::Mutant (shader_variant.h), the --mutant spellings and what each
+// breaks are listed in shader_variant.cpp. Every use is a test of
+// `MUTANT == MUTANT_X` on a constant, so the shipped shader (MUTANT = 0)
+// compiles each of them out.
 #ifndef LIGHTCTS_MUTANTS_GLSL
 #define LIGHTCTS_MUTANTS_GLSL
 
 const int MUTANT_NONE = 0;
-const int MUTANT_DISTANCE_CLAMP_1EM4 = 1;  // distSqr clamped at 1e-4 instead of 1e-5
+const int MUTANT_DISTANCE_CLAMP_1EM4 = 1;         // distSqr clamped at 1e-4 instead of 1e-5
+const int MUTANT_UNSQUARED_RANGE = 2;             // rangeAtt without the outer square
+const int MUTANT_UNSQUARED_SPOT = 3;              // spotAtt without the square
+const int MUTANT_FULL_SPOT_ANGLE = 4;             // the cone uses the full angle as if it were the half angle
+const int MUTANT_UNSANITISED_OBJECT_LOOP = 5;     // the per-object loop runs to count, not min(count, 8)
+const int MUTANT_HALF_PRECISION_ATTENUATION = 6;  // attenuation rounded through a 16-bit float
+const int MUTANT_ABSOLUTE_COORDINATES = 7;        // positions in absolute world coordinates, float32
+const int MUTANT_VERTEX_NORMAL_NOT_NORMALISED = 8;  // legacy vertex lights use rotation * scale * normal
+const int MUTANT_DIRECTIONAL_NOT_SATURATED = 9;   // directional dot(N, L) not clamped at 0
+const int MUTANT_SPOT_DIRECTION_FLIPPED = 10;     // spotDir = direction, not -direction
+const int MUTANT_LOCAL_NOT_SATURATED = 11;        // point and spot dot(N, L) not clamped at 0
+const int MUTANT_LEGACY_VERTEX_LIGHTS_DROPPED = 12;  // legacy list positions 4-7 never lit
 
 #endif

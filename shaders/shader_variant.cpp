@@ -5,6 +5,26 @@ namespace shaders {
 const std::vector<MutantName>& mutantNames() {
   static const std::vector<MutantName> names = {
       {Mutant::DistanceClamp1em4, "distance-clamp-1e-4", "distSqr clamped at 1e-4 instead of 1e-5 (SPEC 3.2)"},
+      {Mutant::UnsquaredRange, "unsquared-range", "rangeAtt without the outer square (SPEC 3.2)"},
+      {Mutant::UnsquaredSpot, "unsquared-spot", "spotAtt without the square (SPEC 3.2)"},
+      {Mutant::FullSpotAngle, "full-spot-angle",
+       "the cone uses the full spot angle where SPEC 3.3 takes the half angle"},
+      {Mutant::UnsanitisedObjectLoop, "unsanitised-object-loop",
+       "the per-object loop runs to count instead of min(count, 8), wrapping past 8 (SPEC 5.2)"},
+      {Mutant::HalfPrecisionAttenuation, "half-precision-attenuation",
+       "the attenuation of point and spot lights rounded through a 16-bit float"},
+      {Mutant::AbsoluteCoordinates, "absolute-coordinates",
+       "positions in absolute world coordinates in float32, not camera-relative (SPEC 7, far from the origin)"},
+      {Mutant::VertexNormalNotNormalised, "vertex-normal-not-normalised",
+       "legacy vertex lights use the rotated and scaled normal without normalising it (SPEC 4)"},
+      {Mutant::DirectionalNotSaturated, "directional-not-saturated",
+       "directional lights use dot(N, L) without clamping it at 0 (SPEC 3.1)"},
+      {Mutant::SpotDirectionFlipped, "spot-direction-flipped",
+       "the spot cone tests against the light's travel direction instead of spotDir = -direction (SPEC 3.2)"},
+      {Mutant::LocalNotSaturated, "local-not-saturated",
+       "point and spot lights use dot(N, L) without clamping it at 0 (SPEC 3.2)"},
+      {Mutant::LegacyVertexLightsDropped, "legacy-vertex-lights-dropped",
+       "the legacy profile lights only list positions 0-3, never the vertex lights 4-7 (SPEC 4)"},
   };
   return names;
 }

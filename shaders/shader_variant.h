@@ -16,7 +16,18 @@ namespace shaders {
 // value is ever a default. The numbers are shared with shaders/mutants.glsl.
 enum class Mutant : int {
   None = 0,
-  DistanceClamp1em4 = 1,  // distSqr clamped at 1e-4 instead of 1e-5 (SPEC 3.2)
+  DistanceClamp1em4 = 1,         // distSqr clamped at 1e-4 instead of 1e-5 (SPEC 3.2)
+  UnsquaredRange = 2,            // rangeAtt without the outer square (SPEC 3.2)
+  UnsquaredSpot = 3,             // spotAtt without the square (SPEC 3.2)
+  FullSpotAngle = 4,             // the full cone angle used as the half angle (SPEC 3.3)
+  UnsanitisedObjectLoop = 5,     // the per-object loop runs to count, not min(count, 8) (SPEC 5.2)
+  HalfPrecisionAttenuation = 6,  // attenuation rounded through a 16-bit float (SPEC 7)
+  AbsoluteCoordinates = 7,       // positions in absolute world coordinates, float32 (SPEC 7)
+  VertexNormalNotNormalised = 8, // legacy vertex lights with the unnormalised normal (SPEC 4)
+  DirectionalNotSaturated = 9,   // directional dot(N, L) not clamped at 0 (SPEC 3.1)
+  SpotDirectionFlipped = 10,     // spotDir = direction instead of -direction (SPEC 3.2)
+  LocalNotSaturated = 11,        // point and spot dot(N, L) not clamped at 0 (SPEC 3.2)
+  LegacyVertexLightsDropped = 12,  // legacy list positions 4-7 (vertex lights) never lit (SPEC 4)
 };
 
 struct MutantName {

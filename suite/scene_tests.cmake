@@ -56,29 +56,20 @@ foreach(scene ${scene_files})
     add_test(NAME ${test}
              COMMAND lightcts compare --scene ${scene} --backend ${backend} ${driver_args}
                      --evidence ${CMAKE_BINARY_DIR}/test-out/evidence/${test})
-    set_tests_properties(${test} PROPERTIES LABELS "${suffix};${group}" SKIP_RETURN_CODE 3
+    # A hung driver is a Timeout, not a stalled CI run.
+    set_tests_properties(${test} PROPERTIES LABELS "${suffix};${group}" SKIP_RETURN_CODE 3 TIMEOUT 300
       ENVIRONMENT "${backend_test_environment}" FAIL_REGULAR_EXPRESSION "Validation (Error|Warning)|VUID-")
   endforeach()
 endforeach()
 
-# Mutants (SPEC 7): each deliberately wrong variant must make a scene of its
-# group fail, on every backend.
-set(mutant_groups "distance-clamp-1e-4=attenuation")
-foreach(entry ${mutant_groups})
-  string(REPLACE "=" ";" mutant_parts ${entry})
-  list(GET mutant_parts 0 mutant)
-  list(GET mutant_parts 1 group)
-  foreach(combination ${backend_combinations})
-    split_combination(${combination})
-    add_test(NAME mutants.${mutant}.${suffix}
-             COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DBACKEND=${backend} -DDRIVER=${driver}
-                     -DMUTANT=${mutant} -DSCENES_DIR=${CMAKE_CURRENT_SOURCE_DIR}/scenes/${group}
-                     -DEVIDENCE_DIR=${CMAKE_BINARY_DIR}/test-out/mutants/${mutant}.${suffix}
-                     -P ${CMAKE_CURRENT_SOURCE_DIR}/mutant_is_killed.cmake)
-    set_tests_properties(mutants.${mutant}.${suffix} PROPERTIES LABELS "mutants;${suffix}"
-      SKIP_REGULAR_EXPRESSION "NotSupported" ENVIRONMENT "${backend_test_environment}")
-  endforeach()
-endforeach()
+# Mutants (SPEC 7): suite/mutant_tests.cmake. `lightcts run` itself:
+# suite/run_tests.cmake. Selection checks (SPEC 5.4, written by hand):
+# suite/selection_tests.cmake.
+include(${CMAKE_CURRENT_LIST_DIR}/mutant_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/run_tests.cmake)
+if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/selection_tests.cmake)
+  include(${CMAKE_CURRENT_LIST_DIR}/selection_tests.cmake)
+endif()
 
 # The command-line contract of SPEC 8 through the real binary: exit statuses
 # and messages. (The same paths are unit-tested in app/tests.)

@@ -25,7 +25,8 @@ TEST(GpuPacking, Std140OffsetsOfTheFrameBlock) {
   EXPECT_EQ(offsetof(GpuFrameBlock, lightCounts), 80u);
   EXPECT_EQ(offsetof(GpuFrameBlock, directionalLights), 96u);
   EXPECT_EQ(offsetof(GpuFrameBlock, otherLights), 96u + 4 * 64);
-  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64);
+  EXPECT_EQ(offsetof(GpuFrameBlock, cameraPosition), 96u + 68 * 64);
+  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 16);
 }
 
 TEST(GpuPacking, Std140OffsetsOfTheObjectBlock) {
@@ -72,6 +73,10 @@ TEST(GpuPacking, PositionsAreRelativeToTheCamera) {
   EXPECT_FLOAT_EQ(l.spotAngles.x, 3.41421356f);
   EXPECT_FLOAT_EQ(l.spotAngles.y, -2.41421356f);
   EXPECT_EQ(l.spotAngles.z, -1.0f);
+  // The camera position itself, only for the absolute-coordinates mutant.
+  EXPECT_EQ(block.cameraPosition.x, 1e6f);
+  EXPECT_EQ(block.cameraPosition.y, 10.0f);
+  EXPECT_EQ(block.cameraPosition.z, 1e6f);
   const GpuObjectBlock object = packObjectBlock(f, 0);
   EXPECT_EQ(object.model.m[12], 0.0f);   // translate - camera = (0, -10, 0)
   EXPECT_EQ(object.model.m[13], -10.0f);

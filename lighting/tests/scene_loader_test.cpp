@@ -399,6 +399,43 @@ TEST(SceneLoaderError, NonIntegerWhereAnIntegerIsRequired) {
               36, "expected an integer in [1, 8192], got 0");
 }
 
+TEST(SceneLoader, FadeLastLightsDefaultsToZeroAndReadsItsValue) {
+  EXPECT_EQ(loadSceneText(sceneWithLights("[]"), "scene.json").pipeline.fadeLastLights, 0);
+  auto fadeOf = [](std::string_view pipeline) {
+    return loadSceneText(std::string(R"({"lightcts": 1, "pipeline": )") + std::string(pipeline) +
+                             R"(, "image": {}, "camera": {}, "objects": [], "lights": []})",
+                         "scene.json")
+        .pipeline.fadeLastLights;
+  };
+  EXPECT_EQ(fadeOf(R"({"fade_last_lights": 8})"), 8);
+  EXPECT_EQ(fadeOf(R"({"fade_last_lights": 64})"), 64);
+  EXPECT_EQ(fadeOf(R"({"fade_last_lights": 0})"), 0);
+  EXPECT_EQ(fadeOf(R"({"profile": "legacy", "fade_last_lights": 16})"), 16);
+  EXPECT_EQ(fadeOf(R"({"fade_last_lights": 16, "profile": "legacy"})"), 16);
+}
+
+TEST(SceneLoaderError, FadeLastLightsOutOfRangeForTheProfile) {
+  // '{' 1, "lightcts" 2-11, '1' 14, ',' 15, "pipeline" 17-26, ':' 27, ' ' 28, '{' 29,
+  // "fade_last_lights" (18 characters) 30-47, ':' 48, ' ' 49, the value at 50.
+  const std::string tail = R"(, "image": {}, "camera": {}, "objects": [], "lights": []})";
+  expectError(R"({"lightcts": 1, "pipeline": {"fade_last_lights": 65})" + tail, "/pipeline/fade_last_lights", 1, 50,
+              "expected an integer in [0, 64], got 65");
+  expectError(R"({"lightcts": 1, "pipeline": {"fade_last_lights": -1})" + tail, "/pipeline/fade_last_lights", 1, 50,
+              "expected an integer in [0, 64], got -1");
+  expectError(R"({"lightcts": 1, "pipeline": {"fade_last_lights": 2.5})" + tail, "/pipeline/fade_last_lights", 1, 50,
+              "expected an integer in [0, 64], got 2.5");
+  expectError(R"({"lightcts": 1, "pipeline": {"fade_last_lights": true})" + tail, "/pipeline/fade_last_lights", 1,
+              50, "expected an integer in [0, 64], got a boolean");
+  // Legacy keeps 16, whichever key comes first. After the profile: "profile" 30-38,
+  // "legacy" 41-48, ',' 49, "fade_last_lights" 51-68, ':' 69, ' ' 70, the value at 71.
+  expectError(R"({"lightcts": 1, "pipeline": {"fade_last_lights": 17, "profile": "legacy"})" + tail,
+              "/pipeline/fade_last_lights", 1, 50,
+              "expected an integer in [0, 16] (the legacy profile keeps 16 lights), got 17");
+  expectError(R"({"lightcts": 1, "pipeline": {"profile": "legacy", "fade_last_lights": 17})" + tail,
+              "/pipeline/fade_last_lights", 1, 71,
+              "expected an integer in [0, 16] (the legacy profile keeps 16 lights), got 17");
+}
+
 TEST(SceneLoaderError, ZeroDirection) {
   // "direction" is 11 characters (14-24), ':' 25, ' ' 26, '[' 27.
   expectError(sceneWithLights(R"([{"direction": [0, 0, 0]}])"), "/lights/0/direction", 3, 27,

@@ -44,6 +44,25 @@ TEST(LightEvaluation, PointLightStraightAbove) {
   EXPECT_EQ(sum.evaluations, 1);
 }
 
+TEST(LightEvaluation, AFadeWeightScalesTheValueAndTheBound) {
+  // The fade weight (lighting/light_fade.h) scales finalColor; the float32
+  // data holds float(finalColor * weight), one rounding like finalColor alone,
+  // so value and bound both scale by the weight, and weight 0 gives exactly 0.
+  const Scene s = oneLight(point({0, 1, 0}, 2, {1, 0.5, 0.25}, 2));
+  const PositionContext where{{0, 10, 0}, 10};
+  LightSum plain, quarter, zero;
+  LightEvaluator(s, s.pipeline.profile).accumulate({0}, {0, 0, 0}, {0, 1, 0}, where, plain);
+  LightEvaluator(s, s.pipeline.profile, {0.25}).accumulate({0}, {0, 0, 0}, {0, 1, 0}, where, quarter);
+  LightEvaluator(s, s.pipeline.profile, {0.0}).accumulate({0}, {0, 0, 0}, {0, 1, 0}, where, zero);
+  EXPECT_DOUBLE_EQ(quarter.value.r, 0.25 * 2 * 0.87890625);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_DOUBLE_EQ(quarter.value[c], 0.25 * plain.value[c]);
+    EXPECT_DOUBLE_EQ(quarter.errorBound[c], 0.25 * plain.errorBound[c]);
+  }
+  EXPECT_EQ(zero.value, Vec3(0.0));
+  EXPECT_EQ(zero.errorBound, Vec3(0.0));
+}
+
 TEST(LightEvaluation, PointLightAtFortyFiveDegrees) {
   // Light at (1, 1, 0): d^2 = 2, N.L = 1/sqrt2, range 10: q = 2/100.
   const Scene s = oneLight(point({1, 1, 0}, 10));

@@ -1,0 +1,138 @@
+#include "conformance/scene_check.h"
+
+#include "conformance/popping.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+
+namespace conformance {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Runs `work` and adds its wall time to `total`.
+template <typename Work>
+auto timed(double& total, Work&& work) {
+  const auto start = Clock::now();
+  if constexpr (std::is_void_v<decltype(work())>) {
+    work();
+    total += millisecondsSince(start);
+  } else {
+    auto value = work();
+    total += millisecondsSince(start);
+    return value;
+  }
+}
+
+}  // namespace
+
+SceneReferences::SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared)
+    : prepared_(std::move(prepared)), renderer_(prepared_) {}
+
+const lighting::Frame& SceneReferences::frame(int index) {
+  auto it = frames_.find(index);
+  if (it == frames_.end()) it = frames_.emplace(index, lighting::prepareFrame(prepared_, index)).first;
+  return it->second;
+}
+
+const reference::ReferenceImages& SceneReferences::reference(int index) {
+  auto it = references_.find(index);
+  if (it == references_.end()) {
+    const lighting::Frame& f = frame(index);
+    it = references_.emplace(index, timed(referenceMs_, [&] { return renderer_.render(f); })).first;
+  }
+  return it->second;
+}
+
+const reference::ReferenceImages& SceneReferences::ideal(int index) {
+  auto it = ideals_.find(index);
+  if (it == ideals_.end()) {
+    const lighting::Frame& f = frame(index);
+    reference::ReferenceOptions options;
+    options.ideal = true;
+    it = ideals_.emplace(index, timed(referenceMs_, [&] { return renderer_.render(f, options); })).first;
+  }
+  return it->second;
+}
+
+const FrameCheck& SceneCheck::evidence() const {
+  for (const FrameCheck& f : frames)
+    if (f.frame == evidenceFrame) return f;
+  throw std::logic_error("SceneCheck: no frame checked");
+}
+
+SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, const CheckOptions& options) {
+  const lighting::Scene& scene = references.prepared()->scene;
+  const int frameCount = scene.frames.count;
+  const bool animated = frameCount > 1;
+  int first = 0, last = frameCount - 1;
+  if (options.onlyFrame) {
+    if (*options.onlyFrame < 0 || *options.onlyFrame >= frameCount)
+      throw std::out_of_range("checkScene: frame " + std::to_string(*options.onlyFrame) + " of a scene with " +
+                              std::to_string(frameCount) + " frame(s)");
+    first = last = *options.onlyFrame;
+  }
+
+  SceneCheck check;
+  const auto start = Clock::now();
+  const double referenceMsBefore = references.referenceMilliseconds();
+  imaging::Image previousError;
+  double worstTightness = -1;
+  bool allPass = true;
+  for (int f = first; f <= last; ++f) {
+    const lighting::Frame& frame = references.frame(f);
+    const reference::ReferenceImages& ref = references.reference(f);
+    if (f == first) timed(check.timings.pipeline, [&] { backend.preparePipeline(frame); });
+    timed(check.timings.draw, [&] { backend.draw(frame); });
+    imaging::Image result = timed(check.timings.readback, [&] { return backend.readback(); });
+
+    FrameCheck frameCheck{f, {}, kNaN, kNaN};
+    frameCheck.comparison = timed(check.timings.compare, [&] {
+      return comparison::compareImages(result, ref, scene.expect, options.worstCount);
+    });
+    if (animated) {
+      const reference::ReferenceImages& ideal = references.ideal(f);
+      timed(check.timings.compare, [&] {
+        imaging::Image error = idealError(result, ideal, frameCheck.idealError);
+        if (!previousError.pixels.empty()) frameCheck.poppingJump = poppingJump(previousError, error);
+        previousError = std::move(error);
+      });
+    }
+
+    // Evidence: the first failing frame, else the tightest one.
+    const bool pass = frameCheck.comparison.verdict == comparison::Verdict::Pass;
+    const double tightness = frameCheck.comparison.maxErrorOverTolerance;
+    const bool keep = allPass && (!pass || tightness > worstTightness || check.frames.empty());
+    if (keep) {
+      check.evidenceFrame = f;
+      check.evidenceResult = std::move(result);
+      check.evidenceReference = ref;
+      worstTightness = tightness;
+    }
+    allPass = allPass && pass;
+    check.frames.push_back(std::move(frameCheck));
+  }
+
+  check.verdict = allPass ? comparison::Verdict::Pass : comparison::Verdict::Fail;
+  if (animated && !options.onlyFrame) {
+    double score = 0;
+    for (const FrameCheck& f : check.frames)
+      if (!std::isnan(f.poppingJump)) score = std::max(score, f.poppingJump);
+    check.poppingScore = score;
+  }
+  check.timings.reference = references.referenceMilliseconds() - referenceMsBefore;
+  check.timings.total = millisecondsSince(start);
+  return check;
+}
+
+}  // namespace conformance

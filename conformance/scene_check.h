@@ -1,0 +1,81 @@
+// One scene on one backend, every frame, against the reference (SPEC 7) and,
+// for animated scenes, against the `--ideal` reference for the popping score
+// (SPEC 6). `lightcts compare` and the workers of `lightcts run` both call
+// checkScene, so a verdict means the same thing in ctest and in a report.
+#pragma once
+
+#include "backends/backend.h"
+#include "comparison/image_comparison.h"
+#include "lighting/frame.h"
+#include "reference/reference_renderer.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace conformance {
+
+// The references of one scene, rendered on first use and kept: a worker that
+// renders the model and then every mutant pays for each reference once.
+class SceneReferences {
+ public:
+  explicit SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared);
+  const std::shared_ptr<const lighting::PreparedScene>& prepared() const { return prepared_; }
+  const lighting::Frame& frame(int index);
+  const reference::ReferenceImages& reference(int frame);
+  const reference::ReferenceImages& ideal(int frame);  // SPEC 6 --ideal
+  double referenceMilliseconds() const { return referenceMs_; }  // time spent rendering references so far
+
+ private:
+  std::shared_ptr<const lighting::PreparedScene> prepared_;
+  reference::ReferenceRenderer renderer_;
+  std::map<int, lighting::Frame> frames_;
+  std::map<int, reference::ReferenceImages> references_;
+  std::map<int, reference::ReferenceImages> ideals_;
+  double referenceMs_ = 0;
+};
+
+// Wall-clock milliseconds per stage, summed over the frames checked.
+struct StageTimings {
+  double reference = 0;  // reference and ideal renders done for this check (0 when cached)
+  double pipeline = 0;   // Backend::preparePipeline
+  double draw = 0;       // Backend::draw (waits for the device)
+  double readback = 0;   // Backend::readback
+  double compare = 0;    // compareImages and the popping arithmetic
+  double total = 0;
+};
+
+struct FrameCheck {
+  int frame = 0;
+  comparison::Comparison comparison;
+  // Animated scenes only (otherwise NaN). idealError: max over compared
+  // pixels and RGB of |backend - ideal|. poppingJump: SPEC 6's
+  // max over pixels |e_f - e_(f-1)| with e = backend - ideal, over pixels
+  // compared in both frames; NaN on frame 0.
+  double idealError;
+  double poppingJump;
+};
+
+struct SceneCheck {
+  comparison::Verdict verdict = comparison::Verdict::Fail;  // Pass only when every frame passes
+  std::vector<FrameCheck> frames;
+  std::optional<double> poppingScore;  // animated scenes: max poppingJump over frames
+  // The frame whose images are kept as evidence: the first failing frame,
+  // else the one with the largest tightness.
+  int evidenceFrame = 0;
+  imaging::Image evidenceResult;
+  reference::ReferenceImages evidenceReference;
+  StageTimings timings;
+  const FrameCheck& evidence() const;  // the FrameCheck of evidenceFrame
+};
+
+struct CheckOptions {
+  std::optional<int> onlyFrame;  // check one frame; default every frame of the scene
+  int worstCount = 10;           // worst pixels kept per frame
+};
+
+// Throws what the backend throws (NotSupportedError, DriverError).
+SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, const CheckOptions& options = {});
+
+}  // namespace conformance

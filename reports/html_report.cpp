@@ -1,0 +1,68 @@
+#include "reports/html_report.h"
+
+#include "imaging/text_file.h"
+#include "reports/html_escape.h"
+#include "reports/html_sections.h"
+
+#include <sstream>
+
+namespace reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kStyle = R"(
+body { font: 14px/1.4 system-ui, sans-serif; margin: 1.5em; color: #222; }
+h1 { font-size: 1.5em; } h2 { border-bottom: 1px solid #ccc; margin-top: 2em; } h3 { margin-bottom: .3em; }
+table { border-collapse: collapse; margin: .5em 0; }
+th, td { border: 1px solid #ccc; padding: 2px 6px; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; } table.summary { font-size: .9em; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
+dl.meta { display: grid; grid-template-columns: max-content auto; gap: 2px 1em; }
+dl.meta dt { font-weight: bold; } dl.meta dd { margin: 0; }
+.v { padding: 0 4px; border-radius: 3px; font-weight: bold; white-space: nowrap; }
+.v-Pass, .v-killed { background: #d4f4d4; } .v-ExpectedFail, .v-NotSupported { background: #e8e8e8; }
+.v-QualityWarning { background: #fff0b3; }
+.v-Fail, .v-Crash, .v-Timeout, .v-UnexpectedPass, .v-survived, .v-unknown { background: #f8c8c8; }
+.zero { color: #bbb; } .bad { background: #fbe3e3; }
+figure { display: inline-block; margin: 0 1em 1em 0; vertical-align: top; }
+figure img { width: 256px; image-rendering: pixelated; border: 1px solid #999; background: #000; }
+figcaption { font-size: .9em; word-break: break-all; max-width: 256px; }
+pre { background: #f6f6f6; padding: .5em; white-space: pre-wrap; }
+img.thumb { width: 64px; image-rendering: pixelated; border: 1px solid #999; background: #000; }
+.missing { color: #b00; font-weight: bold; }
+section.test { border-left: 4px solid #e66; padding-left: 1em; margin-bottom: 2em; }
+section.test.QualityWarning { border-color: #db3; }
+)";
+
+fs::path defaultRunDir(const fs::path& outDir) {
+  fs::path normal = fs::absolute(outDir).lexically_normal();
+  if (!normal.has_filename()) normal = normal.parent_path();
+  return normal.parent_path();
+}
+
+}  // namespace
+
+std::string htmlReport(const Json& results, const fs::path& runDir, const fs::path& reportDir) {
+  checkResultsFormat(results);
+  const html::Page page{results, runDir, reportDir};
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      << "<title>lightcts report " << escapeText(textField(results, "lightcts_revision")) << ' '
+      << escapeText(textField(results, "started_utc")) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+  html::header(out, page);
+  html::backendSummary(out, page);
+  html::mutantTable(out, page);
+  html::attentionSections(out, page);
+  html::allTestsTable(out, page);
+  html::poppingTables(out, page);
+  html::slowestTests(out, page);
+  out << "</body>\n</html>\n";
+  return out.str();
+}
+
+void writeHtmlReport(const Json& results, const fs::path& outDir, const fs::path& runDir) {
+  const fs::path run = runDir.empty() ? defaultRunDir(outDir) : runDir;
+  imaging::writeFileAtomically(outDir / "index.html", htmlReport(results, run, outDir));
+}
+
+}  // namespace reports

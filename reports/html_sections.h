@@ -1,0 +1,38 @@
+// The sections of the HTML report (html_report.h), each written to a stream.
+// Internal to reports/: html_report.cpp puts them together.
+#pragma once
+
+#include "reports/result_fields.h"
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+namespace reports::html {
+
+struct Page {
+  const Json& results;
+  std::filesystem::path runDir;     // where results.json's paths start
+  std::filesystem::path reportDir;  // where index.html lives
+};
+
+// Small pieces shared by the sections.
+std::string verdictBadge(std::string_view verdict);  // <span class="v v-Fail">Fail</span>
+std::string testAnchor(std::string_view testName);   // the id of a test's section
+std::string testLink(const Json& test);              // the name, linked to its section when it has one
+std::string cell(std::string_view text);             // <td>escaped</td>
+std::string numberCell(std::string_view text);       // <td class="n">escaped</td>
+
+// html_sections.cpp
+void header(std::ostream& out, const Page& page);
+void backendSummary(std::ostream& out, const Page& page);
+void mutantTable(std::ostream& out, const Page& page);
+void slowestTests(std::ostream& out, const Page& page);
+
+// html_tests.cpp
+void attentionSections(std::ostream& out, const Page& page);
+void allTestsTable(std::ostream& out, const Page& page);
+void poppingTables(std::ostream& out, const Page& page);
+
+}  // namespace reports::html

@@ -1,0 +1,29 @@
+// JUnit XML of a run (the results.json of `lightcts run`), for CI tools.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace reports {
+
+// One <testsuite> per backend (name = the test-name suffix, e.g. "vulkan"),
+// one <testcase classname="GROUP" name="GROUP.SCENE.BACKEND" time="SECONDS">
+// per test, and a "mutants" <testsuite> (killed passes, survived fails):
+//   Fail, UnexpectedPass, unknown verdicts   <failure message type>
+//   Crash, Timeout                           <error message type>
+//   NotSupported                             <skipped message>
+//   ExpectedFail                             <skipped message="ExpectedFail: reason">
+//                                            (pytest's xfail convention: a known
+//                                            failure is not a pass, and must not block)
+//   QualityWarning, Pass                     pass; QualityWarning with <system-out>
+// A backend that did not run ("NotSupported" or "error") and has no tests
+// still shows, as one testcase "backend.BACKEND" (skipped or error).
+// Throws std::invalid_argument when `results` is not a results object.
+std::string junitXml(const nlohmann::ordered_json& results);
+
+// junitXml, written atomically (temporary file, then rename).
+void writeJunit(const nlohmann::ordered_json& results, const std::filesystem::path& file);
+
+}  // namespace reports

@@ -1,0 +1,142 @@
+#include "reports/junit_writer.h"
+#include "reports/tests/sample_results.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string suiteTag(const std::string& xml, const std::string& name) {
+  const std::regex tag("<testsuite name=\"" + name + "\"[^>]*>");
+  std::smatch match;
+  return std::regex_search(xml, match, tag) ? match.str() : "";
+}
+
+std::string attribute(const std::string& tag, const std::string& name) {
+  const std::regex value(" " + name + "=\"([^\"]*)\"");
+  std::smatch match;
+  return std::regex_search(tag, match, value) ? match[1].str() : "<none>";
+}
+
+long long count(const std::string& text, const std::string& what) {
+  long long n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+struct Counts {
+  std::string tests, failures, errors, skipped;
+};
+
+void expectCounts(const std::string& tag, Counts expected) {
+  ASSERT_FALSE(tag.empty());
+  EXPECT_EQ(attribute(tag, "tests"), expected.tests) << tag;
+  EXPECT_EQ(attribute(tag, "failures"), expected.failures) << tag;
+  EXPECT_EQ(attribute(tag, "errors"), expected.errors) << tag;
+  EXPECT_EQ(attribute(tag, "skipped"), expected.skipped) << tag;
+}
+
+TEST(Junit, CountsPerBackendMutantsAndTotal) {
+  const std::string xml = junitXml(testing::sampleResults());
+  expectCounts(suiteTag(xml, "vulkan"), {"4", "1", "1", "0"});
+  expectCounts(suiteTag(xml, "gl-egl-softpipe"), {"6", "2", "1", "2"});
+  expectCounts(suiteTag(xml, "gl-osmesa"), {"1", "0", "0", "1"});
+  expectCounts(suiteTag(xml, "mutants"), {"4", "1", "1", "0"});
+  std::smatch root;
+  ASSERT_TRUE(std::regex_search(xml, root, std::regex("<testsuites [^>]*>")));
+  expectCounts(root.str(), {"15", "4", "3", "3"});
+  EXPECT_EQ(attribute(root.str(), "time"), "93.250");
+  EXPECT_EQ(count(xml, "<testcase "), 15);
+  EXPECT_EQ(count(xml, "<failure "), 4);
+  EXPECT_EQ(count(xml, "<error "), 3);
+  EXPECT_EQ(count(xml, "<skipped "), 3);
+  EXPECT_EQ(attribute(suiteTag(xml, "vulkan"), "time"), "20.500");
+  EXPECT_EQ(attribute(suiteTag(xml, "vulkan"), "hostname"), "ci-1");
+}
+
+TEST(Junit, TestCasesNameGroupBackendAndTime) {
+  const std::string xml = junitXml(testing::sampleResults());
+  EXPECT_NE(xml.find("<testcase classname=\"attenuation\" name=\"attenuation.point-d-half-range.vulkan\" "
+                     "time=\"1.500\">\n      <failure message=\"Fail: 37 failing of 4096 compared pixels"),
+            std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("name=\"backend.gl-osmesa\" time=\"0.000\">\n      <skipped message=\"NotSupported: "
+                     "libOSMesa.so.8 not found\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("name=\"stability.far-1e6.vulkan\" time=\"0.040\">\n      <error message=\"Crash: "),
+            std::string::npos);
+  EXPECT_NE(xml.find("name=\"mutants.distance-clamp-1e-4.vulkan\" time=\"0.000\">\n      <failure "
+                     "message=\"survived: "),
+            std::string::npos);
+  EXPECT_NE(xml.find("name=\"mutants.unsquared-range.vulkan\" time=\"0.000\">\n      <system-out>"),
+            std::string::npos);
+}
+
+TEST(Junit, ExpectedFailIsSkippedAndQualityWarningPassesWithOutput) {
+  const std::string xml = junitXml(testing::sampleResults());
+  EXPECT_NE(xml.find("<skipped message=\"ExpectedFail: softpipe rounds &lt;pow&gt; &amp; &quot;exp2&quot;\" "
+                     "type=\"ExpectedFail\"/>"),
+            std::string::npos)
+      << xml;
+  const std::size_t warning = xml.find("name=\"limits.popping-64.vulkan\"");
+  ASSERT_NE(warning, std::string::npos);
+  const std::string body = xml.substr(warning, xml.find("</testcase>", warning) - warning);
+  EXPECT_EQ(body.find("<failure"), std::string::npos);
+  EXPECT_NE(body.find("<system-out>QualityWarning: popping score 0.4 above 0.25"), std::string::npos);
+}
+
+TEST(Junit, EscapesTextAndAttributes) {
+  const std::string xml = junitXml(testing::sampleResults());
+  // Crash message: the first line in the attribute, all of it in the element.
+  EXPECT_NE(xml.find("message=\"Crash: worker crashed: signal 11 &lt;SIGSEGV&gt; &amp; &quot;core&quot;\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("message: worker crashed: signal 11 &lt;SIGSEGV&gt; &amp; &quot;core&quot;\nsecond line"),
+            std::string::npos);
+  EXPECT_NE(xml.find("d &lt; r &amp; &quot;half&quot; range"), std::string::npos);
+  EXPECT_EQ(xml.find("<SIGSEGV>"), std::string::npos);
+  EXPECT_EQ(xml.find("<pow>"), std::string::npos);
+  EXPECT_EQ(xml.find("& "), std::string::npos);
+  EXPECT_EQ(xml.find("\"half\""), std::string::npos);
+}
+
+TEST(Junit, UnknownVerdictFailsAndControlCharactersAreReplaced) {
+  auto results = testing::sampleResults();
+  results["tests"][0]["verdict"] = "Maybe";
+  results["tests"][0]["message"] = std::string("bell\x07 and \xFF");
+  const std::string xml = junitXml(results);
+  expectCounts(suiteTag(xml, "vulkan"), {"4", "2", "1", "0"});
+  EXPECT_NE(xml.find("type=\"Maybe\""), std::string::npos);
+  EXPECT_NE(xml.find("bell\\x07 and \xEF\xBF\xBD"), std::string::npos);
+  EXPECT_EQ(xml.find('\x07'), std::string::npos);
+}
+
+TEST(Junit, RejectsWhatIsNotAResultsFile) {
+  EXPECT_THROW(junitXml(nlohmann::ordered_json::array()), std::invalid_argument);
+  EXPECT_THROW(junitXml(nlohmann::ordered_json{{"format", "something-else"}}), std::invalid_argument);
+  const std::string empty = junitXml(nlohmann::ordered_json::object());
+  EXPECT_NE(empty.find("<testsuites name=\"lightcts\" tests=\"0\""), std::string::npos);
+}
+
+TEST(Junit, WritesTheFileAtomically) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "reports_junit_test";
+  fs::remove_all(dir);
+  writeJunit(testing::sampleResults(), dir / "junit.xml");
+  std::ifstream file(dir / "junit.xml");
+  std::stringstream text;
+  text << file.rdbuf();
+  EXPECT_EQ(text.str(), junitXml(testing::sampleResults()));
+  long long entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1) << "no temporary file is left behind";
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace reports

@@ -1,0 +1,72 @@
+#include "runner/expected_failures.h"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <sstream>
+#include <string_view>
+
+namespace runner {
+namespace {
+
+std::string trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r");
+  return std::string(text.substr(first, last - first + 1));
+}
+
+// The statuses a baseline may expect: the failing verdicts of SPEC 7.
+// NotSupported is a skip already and never needs listing.
+constexpr std::array<std::string_view, 4> kExpectable = {"Fail", "Crash", "Timeout", "QualityWarning"};
+
+}  // namespace
+
+void ExpectedFailures::load(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read expected-failures file " + file.string());
+  std::stringstream text;
+  text << in.rdbuf();
+  parse(text.str(), file.string());
+  files_.push_back(file.string());
+}
+
+void ExpectedFailures::parse(const std::string& text, const std::string& sourceName) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    const std::string where = sourceName + ":" + std::to_string(number);
+    const auto hash = line.find('#');
+    const std::string entry = trim(std::string_view(line).substr(0, hash));
+    if (entry.empty()) continue;  // blank or comment-only
+    const std::string reason = hash == std::string::npos ? "" : trim(std::string_view(line).substr(hash + 1));
+    const auto comma = entry.find(',');
+    if (comma == std::string::npos)
+      throw std::runtime_error(where + ": expected 'test,Status  # reason', got '" + entry + "'");
+    const std::string test = trim(std::string_view(entry).substr(0, comma));
+    const std::string status = trim(std::string_view(entry).substr(comma + 1));
+    if (test.empty()) throw std::runtime_error(where + ": the test name is empty");
+    if (std::find(kExpectable.begin(), kExpectable.end(), status) == kExpectable.end())
+      throw std::runtime_error(where + ": unknown status '" + status +
+                               "'; expected Fail, Crash, Timeout or QualityWarning");
+    if (reason.empty())
+      throw std::runtime_error(where + ": '" + test + "' has no reason; write it after '#' on the same line");
+    if (const auto it = entries_.find(test); it != entries_.end())
+      throw std::runtime_error(where + ": '" + test + "' is listed twice (first at " + it->second.source + ")");
+    entries_.emplace(test, ExpectedFailure{status, reason, where});
+  }
+}
+
+const ExpectedFailure* ExpectedFailures::find(const std::string& test) const {
+  const auto it = entries_.find(test);
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+std::string applyExpectation(const std::string& rawVerdict, const ExpectedFailure* expected) {
+  if (!expected) return rawVerdict;
+  if (rawVerdict == "Pass") return "UnexpectedPass";
+  if (rawVerdict == expected->status) return "ExpectedFail";
+  return rawVerdict;
+}
+
+}  // namespace runner

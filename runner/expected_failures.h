@@ -1,0 +1,45 @@
+// Expected failures of a driver (docs/vendors.md), in the baseline style of
+// Mesa's deqp-runner: one `test,Status` line per known failure, each with the
+// reason beside it after '#'. A listed test that fails with that status
+// becomes ExpectedFail; a listed test that passes becomes UnexpectedPass, so
+// a fixed bug is noticed and the line removed.
+//
+//   # lavapipe, Mesa 22.3.6
+//   stability.range-1e4.vulkan,Fail  # lavapipe flushes denormals in the range term
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace runner {
+
+struct ExpectedFailure {
+  std::string status;  // Fail | Crash | Timeout | QualityWarning
+  std::string reason;
+  std::string source;  // file:line, for messages
+};
+
+class ExpectedFailures {
+ public:
+  // Throws std::runtime_error naming file and line for a malformed line, an
+  // unknown status, a missing reason or a test listed twice.
+  void load(const std::filesystem::path& file);
+  void parse(const std::string& text, const std::string& sourceName);
+
+  const ExpectedFailure* find(const std::string& test) const;
+  bool empty() const { return entries_.empty(); }
+  const std::vector<std::string>& files() const { return files_; }
+
+ private:
+  std::map<std::string, ExpectedFailure> entries_;
+  std::vector<std::string> files_;
+};
+
+// The verdict after the baseline: raw Pass of a listed test is
+// UnexpectedPass; the listed status is ExpectedFail; anything else stays.
+std::string applyExpectation(const std::string& rawVerdict, const ExpectedFailure* expected);
+
+}  // namespace runner

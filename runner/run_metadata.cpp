@@ -1,0 +1,52 @@
+#include "runner/run_metadata.h"
+
+#include <ctime>
+#include <fstream>
+#include <thread>
+#include <unistd.h>
+
+#ifndef LIGHTCTS_REVISION
+#define LIGHTCTS_REVISION "unknown"
+#endif
+
+namespace runner {
+namespace {
+
+// The value of `key` in a "key : value" or key="value" line of `file`.
+std::string fieldOf(const char* file, const std::string& key, char separator) {
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(key, 0) != 0) continue;
+    const auto at = line.find(separator);
+    if (at == std::string::npos) continue;
+    std::string value = line.substr(at + 1);
+    value.erase(0, value.find_first_not_of(" \t\""));
+    while (!value.empty() && (value.back() == '"' || value.back() == ' ')) value.pop_back();
+    return value;
+  }
+  return "unknown";
+}
+
+}  // namespace
+
+std::string revision() { return LIGHTCTS_REVISION; }
+
+std::string utcTimestamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+nlohmann::ordered_json machineJson() {
+  char host[256] = {};
+  gethostname(host, sizeof host - 1);
+  return {{"hostname", host},
+          {"cpu", fieldOf("/proc/cpuinfo", "model name", ':')},
+          {"cores", std::thread::hardware_concurrency()},
+          {"os", fieldOf("/etc/os-release", "PRETTY_NAME", '=')}};
+}
+
+}  // namespace runner

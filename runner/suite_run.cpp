@@ -1,0 +1,356 @@
+#include "runner/suite_run.h"
+
+#include "conformance/scene_catalogue.h"
+#include "lighting/scene_loader.h"
+#include "reports/html_report.h"
+#include "reports/junit_writer.h"
+#include "runner/expected_failures.h"
+#include "runner/run_metadata.h"
+#include "imaging/text_file.h"
+#include "runner/worker_plan.h"
+#include "runner/worker_process.h"
+#include "shaders/shader_variant.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace runner {
+namespace {
+
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+const std::vector<std::string> kVerdictOrder = {"Pass",    "Fail",         "QualityWarning", "NotSupported",
+                                                "Crash",   "Timeout",      "ExpectedFail",   "UnexpectedPass"};
+
+struct CatalogueEntry {
+  conformance::SceneFile file;
+  std::string description;
+};
+
+// Every scene is loaded before any worker starts: a scene with a typo stops
+// the run with exit 2 and the JSON path, before anything is written.
+std::vector<CatalogueEntry> loadCatalogue(const std::string& scenesDir) {
+  std::vector<CatalogueEntry> catalogue;
+  for (const conformance::SceneFile& file : conformance::findSceneFiles(scenesDir))
+    catalogue.push_back({file, lighting::loadSceneFile(file.path.string()).description});
+  return catalogue;
+}
+
+std::vector<std::string> mutantsToRun(const RunOptions& options) {
+  if (options.noMutants) return {};
+  if (!options.mutants.empty()) {
+    for (const std::string& m : options.mutants)
+      if (!shaders::mutantFromName(m) || m == "none") throw std::invalid_argument("unknown --mutant '" + m + "'");
+    return options.mutants;
+  }
+  std::vector<std::string> all;
+  for (const shaders::MutantName& m : shaders::mutantNames()) all.emplace_back(m.name);
+  return all;
+}
+
+std::string lastLines(const fs::path& file, int count) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::string text;
+  for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - count : 0; i < lines.size(); ++i)
+    text += lines[i] + "\n";
+  return text;
+}
+
+// What one combination's workers said: the device, and a result per task.
+struct CombinationOutcome {
+  std::string status = "ran";  // ran | NotSupported | error
+  std::string message;
+  Json device = nullptr;
+  std::vector<Json> results;  // one per task, in plan order
+  double wallSeconds = 0;
+};
+
+Json abnormalResult(const WorkerTask& task, const std::string& verdict, const std::string& message) {
+  return {{"test", task.test}, {"raw_verdict", verdict}, {"message", message}, {"metrics", nullptr},
+          {"frames", Json::array()}, {"popping_score", nullptr}, {"timings_ms", nullptr}, {"evidence", nullptr}};
+}
+
+// Runs the plan in as many workers as it takes: a worker that dies or hangs
+// costs its current test (Crash or Timeout) and a new worker picks up at the
+// next one.
+CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& options, const fs::path& logsDir,
+                                  std::ostream& out) {
+  CombinationOutcome outcome;
+  const auto start = Clock::now();
+  const std::string suffix = plan.combination.suffix;
+  const fs::path planFile = logsDir / (suffix + ".plan.json");
+  imaging::writeFileAtomically(planFile, planToJson(plan).dump(1) + "\n");
+  const fs::path logFile = logsDir / (suffix + ".log");
+  const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeoutSeconds * 1000));
+
+  std::size_t next = 0;
+  while (next < plan.tasks.size()) {
+    WorkerProcess worker({options.workerExecutable, "worker", "--plan", planFile.string(), "--start",
+                          std::to_string(next)},
+                         logFile.string());
+    std::string line;
+    bool stop = false;
+    for (;;) {
+      const auto status = worker.readLine(timeout, line);
+      if (status == WorkerProcess::ReadStatus::TimedOut) {
+        const std::string how = worker.finish(true);
+        const WorkerTask& task = plan.tasks[next];
+        outcome.results.push_back(abnormalResult(
+            task, "Timeout", "no result within " + std::to_string(options.timeoutSeconds) + " s; worker " + how));
+        out << "  Timeout " << task.test << "\n";
+        ++next;
+        break;
+      }
+      if (status == WorkerProcess::ReadStatus::Closed) {
+        const std::string how = worker.finish(false);
+        // Status 4 after a test's result: the worker reported a driver error
+        // and quit, so that a new one starts on a fresh device. No test is lost.
+        if (worker.exitStatus() == 4) break;
+        if (next < plan.tasks.size()) {
+          const WorkerTask& task = plan.tasks[next];
+          outcome.results.push_back(abnormalResult(
+              task, "Crash", "the worker ended during this test (" + how + "); its last output:\n" +
+                                 lastLines(logFile, 8)));
+          out << "  Crash " << task.test << " (" << how << ")\n";
+          ++next;
+        }
+        break;
+      }
+      Json event;
+      try {
+        event = Json::parse(line);
+      } catch (const Json::parse_error&) {
+        continue;  // a driver that prints on stdout; the protocol lines are JSON
+      }
+      const std::string kind = event.value("kind", "");
+      if (kind == "device") {
+        outcome.device = event["device"];
+      } else if (kind == "backend_unavailable" || kind == "backend_error") {
+        outcome.status = kind == "backend_unavailable" ? "NotSupported" : "error";
+        outcome.message = event.value("message", "");
+        const std::string verdict = kind == "backend_unavailable" ? "NotSupported" : "Crash";
+        for (; next < plan.tasks.size(); ++next)
+          outcome.results.push_back(abnormalResult(plan.tasks[next], verdict, outcome.message));
+        stop = true;
+        break;
+      } else if (kind == "result" && event.value("index", -1) == int(next)) {
+        event.erase("kind");
+        event.erase("index");
+        outcome.results.push_back(std::move(event));
+        ++next;
+      }
+    }
+    if (stop) break;
+  }
+  outcome.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return outcome;
+}
+
+Json testRecord(const CatalogueEntry& scene, const std::string& suffix, Json result,
+                const ExpectedFailures& expected) {
+  const std::string raw = result.value("raw_verdict", "Crash");
+  const ExpectedFailure* listed = expected.find(result.value("test", ""));
+  Json record = {{"name", result["test"]},
+                 {"group", scene.file.group},
+                 {"scene", scene.file.name},
+                 {"scene_file", scene.file.path.string()},
+                 {"description", scene.description},
+                 {"backend", suffix},
+                 {"verdict", applyExpectation(raw, listed)},
+                 {"raw_verdict", raw},
+                 {"expected_reason", listed ? listed->reason : ""},
+                 {"message", result.value("message", "")}};
+  for (const char* key : {"metrics", "frames", "popping_score", "timings_ms", "evidence"})
+    record[key] = result.contains(key) ? result[key] : Json(nullptr);
+  return record;
+}
+
+// A mutant is killed on a backend when at least one scene fails with it.
+Json mutantRecord(const std::string& mutant, const std::string& suffix, const std::string& backendStatus,
+                  const std::vector<Json>& results) {
+  Json killedBy = Json::array();
+  Json evidence = nullptr;
+  bool crashed = false, timedOut = false;
+  for (const Json& r : results) {
+    const std::string raw = r.value("raw_verdict", "");
+    if (raw == "Fail") {
+      const std::string test = r.value("test", "");
+      killedBy.push_back(test.substr(0, test.rfind('.')));
+      if (evidence.is_null() && !r["evidence"].is_null()) {
+        evidence = r["evidence"];
+        evidence["test"] = test;
+      }
+    }
+    crashed = crashed || raw == "Crash";
+    timedOut = timedOut || raw == "Timeout";
+  }
+  std::string status = !killedBy.empty() ? "killed"
+                       : backendStatus == "NotSupported" ? "NotSupported"
+                       : crashed ? "Crash"
+                       : timedOut ? "Timeout"
+                                  : "survived";
+  std::string what;
+  for (const shaders::MutantName& m : shaders::mutantNames())
+    if (m.name == mutant) what = m.what;
+  return {{"mutant", mutant}, {"what", what},         {"backend", suffix},
+          {"status", status}, {"killed_by", killedBy}, {"evidence", evidence}};
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string formatMs(double ms) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(ms < 10 ? 2 : 0) << ms << " ms";
+  return text.str();
+}
+
+}  // namespace
+
+int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  const auto started = Clock::now();
+  const std::string startedUtc = utcTimestamp();
+  // Everything the options name is checked before anything is written.
+  std::vector<CatalogueEntry> catalogue;
+  ExpectedFailures expected;
+  try {
+    catalogue = loadCatalogue(options.scenesDir);
+    for (const std::string& file : options.expectedFailureFiles) expected.load(file);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());  // a bad scene or baseline is bad input (exit 2)
+  }
+  const std::vector<BackendCombination> combinations = selectCombinations(options.backends);
+  const std::vector<std::string> mutants = mutantsToRun(options);
+  if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
+
+  const fs::path outDir(options.outDir);
+  const fs::path logsDir = outDir / "logs";
+  fs::create_directories(logsDir);
+  // Evidence of an earlier run in the same folder would be mistaken for this one's.
+  for (const char* stale : {"evidence", "mutants", "report"}) fs::remove_all(outDir / stale);
+  fs::remove(outDir / "results.json");
+
+  Json backendsJson = Json::array();
+  Json tests = Json::array();
+  Json mutantsJson = Json::array();
+  bool anyRan = false, allGood = true;
+  std::map<std::string, const CatalogueEntry*> sceneOfCase;
+  for (const CatalogueEntry& scene : catalogue) sceneOfCase[scene.file.caseName()] = &scene;
+
+  for (const BackendCombination& combination : combinations) {
+    WorkerPlan plan{combination, options.device, options.expectDriver, fs::absolute(outDir).string(), {}};
+    if (!options.mutantsOnly)
+      for (const CatalogueEntry& scene : catalogue)
+        plan.tasks.push_back({scene.file.caseName() + "." + combination.suffix, scene.file.path.string(), "none"});
+    for (const std::string& mutant : mutants)
+      for (const CatalogueEntry& scene : catalogue)
+        plan.tasks.push_back({scene.file.caseName() + "." + combination.suffix, scene.file.path.string(), mutant});
+
+    out << "run: " << combination.suffix << ": " << plan.tasks.size() << " test(s)" << std::endl;
+    const CombinationOutcome outcome = runCombination(plan, options, logsDir, out);
+    anyRan = anyRan || outcome.status != "NotSupported";  // an error is present, and fails
+
+    Json counts = Json::object();
+    for (const std::string& v : kVerdictOrder) counts[v] = 0;
+    std::map<std::string, std::vector<Json>> mutantResults;
+    for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
+      const WorkerTask& task = plan.tasks[i];
+      if (task.mutant != "none") {
+        mutantResults[task.mutant].push_back(outcome.results[i]);
+        continue;
+      }
+      Json record = testRecord(*sceneOfCase.at(task.test.substr(0, task.test.rfind('.'))), combination.suffix,
+                               outcome.results[i], expected);
+      const std::string verdict = record["verdict"];
+      counts[verdict] = counts[verdict].get<int>() + 1;
+      if (verdict == "Fail" || verdict == "Crash" || verdict == "Timeout" || verdict == "UnexpectedPass")
+        allGood = false;
+      tests.push_back(std::move(record));
+    }
+    Json mutantCounts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
+    for (const std::string& mutant : mutants) {
+      Json record = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant]);
+      const std::string status = record["status"];
+      const char* bucket = status == "killed" ? "killed" : status == "survived" ? "survived" : "other";
+      mutantCounts[bucket] = mutantCounts[bucket].get<int>() + 1;
+      if (status != "killed" && status != "NotSupported") allGood = false;
+      mutantsJson.push_back(std::move(record));
+    }
+    if (outcome.status == "error") allGood = false;
+    backendsJson.push_back({{"backend", combination.suffix},
+                            {"api_backend", combination.backend},
+                            {"driver_option", combination.driver},
+                            {"status", outcome.status},
+                            {"message", outcome.message},
+                            {"device", outcome.device},
+                            {"expected_failures_file", joined(expected.files())},
+                            {"counts", counts},
+                            {"mutant_counts", mutantCounts},
+                            {"wall_s", outcome.wallSeconds},
+                            {"log", "logs/" + combination.suffix + ".log"}});
+    out << "run: " << combination.suffix << ": " << outcome.status;
+    if (!outcome.message.empty()) out << " (" << outcome.message << ")";
+    for (const std::string& v : kVerdictOrder)
+      if (counts[v].get<int>() > 0) out << ", " << counts[v].get<int>() << " " << v;
+    if (!mutants.empty())
+      out << "; mutants: " << mutantCounts["killed"].get<int>() << " killed, " << mutantCounts["survived"].get<int>()
+          << " survived";
+    out << " (" << std::fixed << std::setprecision(1) << outcome.wallSeconds << " s)" << std::defaultfloat
+        << std::endl;
+  }
+
+  // The slowest tests, for whoever keeps the run short (Mesa CI prints the same).
+  std::vector<std::pair<double, std::string>> times;
+  for (const Json& t : tests)
+    if (t["timings_ms"].is_object()) times.emplace_back(t["timings_ms"]["total"].get<double>(), t["name"]);
+  std::sort(times.begin(), times.end(), std::greater<>());
+  if (times.size() > 10) times.resize(10);
+  Json slowest = Json::array();
+  for (const auto& [ms, name] : times) slowest.push_back({{"name", name}, {"total_ms", ms}});
+
+  const Json results = {{"format", "lightcts-results"},
+                        {"version", 1},
+                        {"lightcts_revision", revision()},
+                        {"started_utc", startedUtc},
+                        {"duration_s", std::chrono::duration<double>(Clock::now() - started).count()},
+                        {"command", options.commandLine},
+                        {"machine", machineJson()},
+                        {"scenes_dir", options.scenesDir},
+                        {"timeout_s", options.timeoutSeconds},
+                        {"backends", backendsJson},
+                        {"tests", tests},
+                        {"mutants", mutantsJson},
+                        {"slowest", slowest}};
+  reports::writeHtmlReport(results, outDir / "report");
+  reports::writeJunit(results, outDir / "junit.xml");
+  // Last: its presence says the run finished and the other files are complete.
+  imaging::writeFileAtomically(outDir / "results.json", results.dump(1) + "\n");
+
+  out << "slowest tests:\n";
+  for (const auto& [ms, name] : times) out << "  " << formatMs(ms) << "  " << name << "\n";
+  out << "run: results in " << (outDir / "results.json").string() << ", report in "
+      << (outDir / "report" / "index.html").string() << std::endl;
+  if (!anyRan) {
+    err << "lightcts: run: no backend asked for is present here (NotSupported)\n";
+    return 3;
+  }
+  return allGood ? 0 : 1;
+}
+
+}  // namespace runner

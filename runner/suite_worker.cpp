@@ -1,0 +1,205 @@
+#include "runner/suite_worker.h"
+
+#include "backends/expected_driver.h"
+#include "comparison/comparison_report.h"
+#include "conformance/scene_check.h"
+#include "lighting/scene_loader.h"
+
+#include <csignal>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <unistd.h>
+
+namespace runner {
+namespace {
+
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+Json finiteOrNull(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+Json deviceJson(const backends::DeviceInfo& d) {
+  return {{"name", d.name},
+          {"driver", d.driver},
+          {"driver_version", d.driverVersion},
+          {"api_version", d.apiVersion},
+          {"selected_by", d.selectedBy}};
+}
+
+void emit(std::ostream& out, const Json& line) { out << line.dump() << '\n' << std::flush; }
+
+// Test-only hooks (docs/cli.md): make the worker die or hang at one test, so
+// the runner's Crash and Timeout handling is tested against a real process.
+void testHooks(const std::string& test) {
+  if (const char* crash = std::getenv("LIGHTCTS_TEST_CRASH_ON"); crash && test == crash) std::raise(SIGSEGV);
+  if (const char* hang = std::getenv("LIGHTCTS_TEST_HANG_ON"); hang && test == hang)
+    for (;;) pause();
+}
+
+// Metrics over every frame checked: counts summed, errors and tightness the
+// largest; the worst pixels are those of the evidence frame.
+Json metricsJson(const conformance::SceneCheck& check) {
+  long long compared = 0, masked = 0, failing = 0, nonFinite = 0;
+  double maxAbs = 0, tightness = 0, rmse = 0;
+  for (const conformance::FrameCheck& f : check.frames) {
+    const comparison::Comparison& c = f.comparison;
+    compared += c.comparedPixels;
+    masked += c.maskedPixels;
+    failing += c.failingPixels;
+    nonFinite += c.nonFinitePixels;
+    maxAbs = std::max(maxAbs, c.maxAbsError);
+    tightness = std::max(tightness, c.maxErrorOverTolerance);
+    rmse = std::max(rmse, c.rmse);
+  }
+  const comparison::Comparison& e = check.evidence().comparison;
+  Json worst = Json::array();
+  for (const comparison::PixelReport& p : e.worst) {
+    Json pixel = {{"x", p.x}, {"y", p.y}};
+    for (const auto& [key, values] : {std::pair{"result", p.result}, std::pair{"reference", p.reference},
+                                      std::pair{"tolerance", p.tolerance}})
+      pixel[key] = Json::array({finiteOrNull(values[0]), finiteOrNull(values[1]), finiteOrNull(values[2])});
+    pixel["tolerance_scale"] = e.toleranceScale;
+    worst.push_back(pixel);
+  }
+  return {{"compared_pixels", compared}, {"masked_pixels", masked},   {"failing_pixels", failing},
+          {"non_finite_pixels", nonFinite}, {"max_failing_pixels", e.maxFailingPixels},
+          {"max_abs_error", finiteOrNull(maxAbs)}, {"rmse", finiteOrNull(rmse)},
+          {"tightness", finiteOrNull(tightness)}, {"tightness_is_infinite", std::isinf(tightness)},
+          {"expect_fail", e.expectFail}, {"worst", worst}};
+}
+
+Json framesJson(const conformance::SceneCheck& check) {
+  Json frames = Json::array();
+  for (const conformance::FrameCheck& f : check.frames)
+    frames.push_back({{"frame", f.frame},
+                      {"verdict", comparison::verdictName(f.comparison.verdict)},
+                      {"failing_pixels", f.comparison.failingPixels},
+                      {"max_abs_error", finiteOrNull(f.comparison.maxAbsError)},
+                      {"tightness", finiteOrNull(f.comparison.maxErrorOverTolerance)},
+                      {"ideal_error", finiteOrNull(f.idealError)},
+                      {"popping_jump", finiteOrNull(f.poppingJump)}});
+  return frames;
+}
+
+Json evidenceJson(const std::string& dir, int frame) {
+  return {{"frame", frame},
+          {"result_png", dir + "/result.png"},
+          {"reference_png", dir + "/reference.png"},
+          {"error_mask_png", dir + "/error-mask.png"},
+          {"summary_json", dir + "/summary.json"}};
+}
+
+class Worker {
+ public:
+  Worker(const WorkerPlan& plan, std::ostream& out) : plan_(plan), out_(out) {}
+
+  int run(int start) {
+    for (int i = start; i < int(plan_.tasks.size()); ++i) {
+      const WorkerTask& task = plan_.tasks[std::size_t(i)];
+      testHooks(task.test);
+      if (int status = ensureBackend(task.mutant); status != 0) return status;
+      Json result = {{"kind", "result"}, {"index", i}, {"test", task.test}};
+      try {
+        runTask(task, result);
+      } catch (const backends::NotSupportedError& e) {
+        result["raw_verdict"] = "NotSupported";
+        result["message"] = e.what();
+      } catch (const backends::DriverError& e) {
+        result["raw_verdict"] = "Crash";
+        result["message"] = std::string("driver error: ") + e.what();
+        emit(out_, result);
+        return 4;
+      } catch (const std::exception& e) {
+        result["raw_verdict"] = "Crash";
+        result["message"] = std::string("internal error: ") + e.what();
+      }
+      emit(out_, result);
+    }
+    return 0;
+  }
+
+ private:
+  // One backend at a time, built for the task's shader variant.
+  int ensureBackend(const std::string& mutant) {
+    if (backend_ && mutant == backendMutant_) return 0;
+    backend_.reset();
+    const backends::BackendEntry* entry = backends::findCompiledBackend(plan_.combination.backend);
+    try {
+      if (!entry) throw backends::NotSupportedError("backend '" + plan_.combination.backend + "' is not built");
+      backends::BackendOptions options;
+      options.device = plan_.device;
+      // With --device, the device decides the GL driver (a vendor's EGL
+      // device); the softpipe combinations still ask Mesa for softpipe.
+      const bool deviceDecides = !plan_.device.empty() && plan_.combination.driver == "llvmpipe";
+      options.driver = deviceDecides ? "" : plan_.combination.driver;
+      options.validation = backends::validationRequestedByDefault();
+      const auto variant = shaders::mutantFromName(mutant);
+      if (!variant) throw std::invalid_argument("unknown mutant '" + mutant + "'");
+      options.variant.mutant = *variant;
+      backend_ = entry->create(options);
+      const backends::DeviceInfo device = backend_->device();
+      backends::requireExpectedDriver(device, plan_.expectDriver);
+      backendMutant_ = mutant;
+      if (!announced_) emit(out_, {{"kind", "device"}, {"device", deviceJson(device)}});
+      announced_ = true;
+      return 0;
+    } catch (const backends::NotSupportedError& e) {
+      emit(out_, {{"kind", "backend_unavailable"}, {"message", e.what()}});
+      return 3;
+    } catch (const std::exception& e) {
+      emit(out_, {{"kind", "backend_error"}, {"message", e.what()}});
+      return 4;
+    }
+  }
+
+  conformance::SceneReferences& referencesOf(const std::string& scene) {
+    auto it = references_.find(scene);
+    if (it == references_.end()) {
+      auto prepared = lighting::prepareScene(lighting::loadSceneFile(scene));
+      it = references_.emplace(scene, std::make_unique<conformance::SceneReferences>(std::move(prepared))).first;
+    }
+    return *it->second;
+  }
+
+  void runTask(const WorkerTask& task, Json& result) {
+    conformance::SceneReferences& references = referencesOf(task.scene);
+    const conformance::SceneCheck check = conformance::checkScene(references, *backend_);
+    const std::string verdict(comparison::verdictName(check.verdict));
+    result["raw_verdict"] = verdict;
+    result["message"] = "";
+    result["metrics"] = metricsJson(check);
+    result["frames"] = framesJson(check);
+    result["popping_score"] = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
+    const conformance::StageTimings& t = check.timings;
+    result["timings_ms"] = {{"reference", t.reference}, {"pipeline", t.pipeline}, {"draw", t.draw},
+                            {"readback", t.readback},   {"compare", t.compare},   {"total", t.total}};
+    result["evidence"] = nullptr;
+    if (check.verdict == comparison::Verdict::Pass) return;
+    // Every failing test leaves evidence; a mutant leaves it for its first kill.
+    const bool isMutant = task.mutant != "none";
+    if (isMutant && !evidencedMutants_.insert(task.mutant).second) return;
+    const std::string dir =
+        isMutant ? mutantEvidenceDir(task.mutant, plan_.combination.suffix) : testEvidenceDir(task.test);
+    comparison::writeEvidence((fs::path(plan_.outDir) / dir).string(), check.evidence().comparison,
+                              check.evidenceResult, check.evidenceReference, task.test);
+    result["evidence"] = evidenceJson(dir, check.evidenceFrame);
+  }
+
+  const WorkerPlan& plan_;
+  std::ostream& out_;
+  std::unique_ptr<backends::Backend> backend_;
+  std::string backendMutant_;
+  bool announced_ = false;
+  std::map<std::string, std::unique_ptr<conformance::SceneReferences>> references_;
+  std::set<std::string> evidencedMutants_;
+};
+
+}  // namespace
+
+int runWorker(const WorkerPlan& plan, int start, std::ostream& out) { return Worker(plan, out).run(start); }
+
+}  // namespace runner

@@ -1,0 +1,43 @@
+#include "runner/backend_combination.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+namespace runner {
+namespace {
+
+std::vector<std::string> suffixes(const std::vector<BackendCombination>& combinations) {
+  std::vector<std::string> names;
+  for (const auto& c : combinations) names.push_back(c.suffix);
+  return names;
+}
+
+TEST(BackendCombination, NoNameMeansAllFiveInSpecOrder) {
+  EXPECT_EQ(suffixes(selectCombinations({})),
+            (std::vector<std::string>{"vulkan", "gl-egl", "gl-osmesa", "gl-egl-softpipe", "gl-osmesa-softpipe"}));
+}
+
+TEST(BackendCombination, ApiNameStandsForEveryDriverOfIt) {
+  EXPECT_EQ(suffixes(selectCombinations({"gl-egl"})), (std::vector<std::string>{"gl-egl", "gl-egl-softpipe"}));
+}
+
+TEST(BackendCombination, SuffixPicksOneCombinationWithItsDriver) {
+  const auto selected = selectCombinations({"gl-osmesa-softpipe", "vulkan", "vulkan"});
+  ASSERT_EQ(suffixes(selected), (std::vector<std::string>{"vulkan", "gl-osmesa-softpipe"}));
+  EXPECT_EQ(selected[1].backend, "gl-osmesa");
+  EXPECT_EQ(selected[1].driver, "softpipe");
+  EXPECT_EQ(selected[0].driver, "");
+}
+
+TEST(BackendCombination, UnknownNameIsNamedInTheError) {
+  try {
+    selectCombinations({"vulkan", "metal"});
+    FAIL() << "metal was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'metal'"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace runner

@@ -1,0 +1,36 @@
+#include "runner/worker_plan.h"
+
+namespace runner {
+
+nlohmann::json planToJson(const WorkerPlan& plan) {
+  nlohmann::json tasks = nlohmann::json::array();
+  for (const WorkerTask& t : plan.tasks) tasks.push_back({{"test", t.test}, {"scene", t.scene}, {"mutant", t.mutant}});
+  return {{"suffix", plan.combination.suffix},
+          {"backend", plan.combination.backend},
+          {"driver", plan.combination.driver},
+          {"device", plan.device},
+          {"expect_driver", plan.expectDriver},
+          {"out_dir", plan.outDir},
+          {"tasks", tasks}};
+}
+
+WorkerPlan planFromJson(const nlohmann::json& json) {
+  WorkerPlan plan;
+  plan.combination = {json.at("suffix").get<std::string>(), json.at("backend").get<std::string>(),
+                      json.at("driver").get<std::string>()};
+  plan.device = json.at("device").get<std::string>();
+  plan.expectDriver = json.at("expect_driver").get<std::string>();
+  plan.outDir = json.at("out_dir").get<std::string>();
+  for (const auto& t : json.at("tasks"))
+    plan.tasks.push_back({t.at("test").get<std::string>(), t.at("scene").get<std::string>(),
+                          t.at("mutant").get<std::string>()});
+  return plan;
+}
+
+std::string testEvidenceDir(const std::string& test) { return "evidence/" + test; }
+
+std::string mutantEvidenceDir(const std::string& mutant, const std::string& suffix) {
+  return "mutants/" + mutant + "." + suffix;
+}
+
+}  // namespace runner

@@ -1,0 +1,37 @@
+// What `lightcts run` hands a worker process (`lightcts worker`): one backend
+// combination and the tests to run on it, in order. Tests are grouped by
+// mutant (the model first), because a backend is built for one shader variant
+// and a worker keeps one backend at a time.
+#pragma once
+
+#include "runner/backend_combination.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace runner {
+
+struct WorkerTask {
+  std::string test;   // <group>.<name>.<suffix>
+  std::string scene;  // scene file path
+  std::string mutant = "none";
+};
+
+struct WorkerPlan {
+  BackendCombination combination;
+  std::string device;        // --device, "" for the default
+  std::string expectDriver;  // --expect-driver, "" for no check
+  std::string outDir;        // evidence goes under outDir/evidence and outDir/mutants
+  std::vector<WorkerTask> tasks;
+};
+
+nlohmann::json planToJson(const WorkerPlan& plan);
+WorkerPlan planFromJson(const nlohmann::json& json);  // throws nlohmann::json::exception
+
+// The evidence folders, relative to the run's --out folder.
+std::string testEvidenceDir(const std::string& test);                           // evidence/<test>
+std::string mutantEvidenceDir(const std::string& mutant, const std::string& suffix);  // mutants/<mutant>.<suffix>
+
+}  // namespace runner

@@ -1,0 +1,111 @@
+#include "runner/worker_process.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <poll.h>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace runner {
+namespace {
+
+std::string systemError(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+}  // namespace
+
+WorkerProcess::WorkerProcess(const std::vector<std::string>& argv, const std::string& stderrFile) {
+  int pipeFds[2];
+  if (pipe2(pipeFds, O_CLOEXEC) != 0) throw std::runtime_error(systemError("cannot create a pipe"));
+  const int errFd = open(stderrFile.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (errFd < 0) {
+    close(pipeFds[0]);
+    close(pipeFds[1]);
+    throw std::runtime_error(systemError("cannot open " + stderrFile));
+  }
+  // Built before fork: the child may only call async-signal-safe functions.
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(pipeFds[0]);
+    close(pipeFds[1]);
+    close(errFd);
+    throw std::runtime_error(systemError("cannot start a worker"));
+  }
+  if (pid == 0) {
+    dup2(pipeFds[1], STDOUT_FILENO);
+    dup2(errFd, STDERR_FILENO);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  close(pipeFds[1]);
+  close(errFd);
+  pid_ = pid;
+  fd_ = pipeFds[0];
+}
+
+WorkerProcess::~WorkerProcess() {
+  if (pid_ > 0) finish(true);
+  if (fd_ >= 0) close(fd_);
+}
+
+WorkerProcess::ReadStatus WorkerProcess::readLine(std::chrono::milliseconds timeout, std::string& line) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    if (const auto newline = buffer_.find('\n'); newline != std::string::npos) {
+      line = buffer_.substr(0, newline);
+      buffer_.erase(0, newline + 1);
+      return ReadStatus::Line;
+    }
+    if (fd_ < 0) return ReadStatus::Closed;
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return ReadStatus::TimedOut;
+    pollfd p{fd_, POLLIN, 0};
+    const int ready = poll(&p, 1, int(left.count()));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready < 0) throw std::runtime_error(systemError("cannot wait for a worker"));
+    if (ready == 0) return ReadStatus::TimedOut;
+    char chunk[65536];
+    const ssize_t n = read(fd_, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      close(fd_);
+      fd_ = -1;
+      // A last line without '\n' is still a line.
+      if (!buffer_.empty()) {
+        line.swap(buffer_);
+        buffer_.clear();
+        return ReadStatus::Line;
+      }
+      return ReadStatus::Closed;
+    }
+    buffer_.append(chunk, std::size_t(n));
+  }
+}
+
+std::string WorkerProcess::finish(bool kill) {
+  if (pid_ <= 0) return "already finished";
+  if (kill) ::kill(pid_, SIGKILL);
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  if (WIFEXITED(status)) {
+    exitStatus_ = WEXITSTATUS(status);
+    return "exit status " + std::to_string(exitStatus_);
+  }
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    const char* name = sigabbrev_np(sig);
+    return std::string("killed by signal ") + (name ? std::string("SIG") + name : "?") + " (" + std::to_string(sig) +
+           ")";
+  }
+  return "ended";
+}
+
+}  // namespace runner

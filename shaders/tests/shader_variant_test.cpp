@@ -1,0 +1,60 @@
+// The mutants (SPEC 7) are test-only: the default variant is the model, every
+// --mutant spelling round-trips, and each reaches the MUTANT constant.
+#include "shaders/shader_constants.h"
+#include "shaders/shader_variant.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace shaders {
+namespace {
+
+TEST(ShaderVariant, DefaultIsTheSpecialisedModelWithoutMutant) {
+  const ShaderVariant variant;
+  EXPECT_TRUE(variant.specialised);
+  EXPECT_EQ(variant.mutant, Mutant::None);
+  EXPECT_EQ(constantValues(lighting::ShaderFeatures{}, variant)[kMutant], 0);
+  EXPECT_EQ(mutantFromName("none"), Mutant::None);
+  EXPECT_EQ(mutantName(Mutant::None), "none");
+}
+
+TEST(ShaderVariant, EveryMutantNameRoundTrips) {
+  std::set<int> numbers;
+  std::set<std::string> names;
+  for (const MutantName& m : mutantNames()) {
+    SCOPED_TRACE(std::string(m.name));
+    EXPECT_NE(m.mutant, Mutant::None);
+    EXPECT_FALSE(m.what.empty());
+    EXPECT_EQ(mutantFromName(m.name), m.mutant);
+    EXPECT_EQ(mutantName(m.mutant), m.name);
+    EXPECT_TRUE(numbers.insert(static_cast<int>(m.mutant)).second) << "number used twice";
+    EXPECT_TRUE(names.insert(std::string(m.name)).second) << "name used twice";
+    ShaderVariant variant;
+    variant.mutant = m.mutant;
+    EXPECT_EQ(constantValues(lighting::ShaderFeatures{}, variant)[kMutant], static_cast<int>(m.mutant));
+  }
+  // The numbers are dense from 1, as shaders/mutants.glsl numbers them.
+  for (int i = 1; i <= int(numbers.size()); ++i) EXPECT_TRUE(numbers.count(i)) << i;
+  EXPECT_GE(mutantNames().size(), 12u);
+  EXPECT_EQ(mutantFromName("no-such-mutant"), std::nullopt);
+  EXPECT_EQ(mutantFromName(""), std::nullopt);
+}
+
+// SPEC 7: each mutant must be caught on every backend, so each needs its
+// scenes in the ctest table (suite/mutant_tests.cmake: "<name>=<scenes>").
+TEST(ShaderVariant, EveryMutantHasKillingScenesInTheCtestTable) {
+  std::ifstream file(LIGHTCTS_SOURCE_DIR "/suite/mutant_tests.cmake");
+  ASSERT_TRUE(file) << "suite/mutant_tests.cmake";
+  std::stringstream text;
+  text << file.rdbuf();
+  for (const MutantName& m : mutantNames())
+    EXPECT_NE(text.str().find("\"" + std::string(m.name) + "="), std::string::npos)
+        << m.name << " has no entry in suite/mutant_tests.cmake";
+}
+
+}  // namespace
+}  // namespace shaders

@@ -1,0 +1,55 @@
+# Runs `lightcts run` and checks its exit status and, in results.json, the
+# verdicts of named tests and the status of named backends: the runner's own
+# contract (issue 6), tested through the real binary and real drivers.
+#   cmake -DLIGHTCTS=exe -DOUT=dir -DEXIT=status "-DARGS=a;b" ["-DENV=K=V;K=V"]
+#         ["-DVERDICTS=test=Verdict;..."] ["-DBACKENDS=suffix=status;..."]
+#         ["-DOUTPUT_REGEX=regex"] -P run_outcome.cmake
+# A skip (exit 3 where EXIT is not 3) prints NotSupported for ctest.
+file(REMOVE_RECURSE ${OUT})
+set(command ${LIGHTCTS} run ${ARGS} --out ${OUT})
+if(ENV)
+  set(command ${CMAKE_COMMAND} -E env ${ENV} ${command})
+endif()
+execute_process(COMMAND ${command} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if(status EQUAL 3 AND NOT EXIT EQUAL 3)
+  message("NotSupported: no backend asked for is present")
+  return()
+endif()
+if(NOT status EQUAL EXIT)
+  message(FATAL_ERROR "lightcts run exited ${status}, expected ${EXIT}")
+endif()
+if(OUTPUT_REGEX AND NOT "${out}${err}" MATCHES "${OUTPUT_REGEX}")
+  message(FATAL_ERROR "the output does not match '${OUTPUT_REGEX}'")
+endif()
+if(NOT VERDICTS AND NOT BACKENDS)
+  return()
+endif()
+
+file(READ ${OUT}/results.json results)
+# For each "name=wanted" in `expectations`: the entry of results[array] whose
+# `key` is name must have `field` equal to wanted.
+function(check_entries array key field expectations)
+  string(JSON count LENGTH "${results}" ${array})
+  math(EXPR last "${count} - 1")
+  foreach(expectation ${expectations})
+    string(REPLACE "=" ";" parts ${expectation})
+    list(GET parts 0 name)
+    list(GET parts 1 wanted)
+    set(found "")
+    set(message "")
+    foreach(i RANGE ${last})
+      string(JSON entry_name GET "${results}" ${array} ${i} ${key})
+      if(entry_name STREQUAL name)
+        string(JSON found GET "${results}" ${array} ${i} ${field})
+        string(JSON message GET "${results}" ${array} ${i} message)
+      endif()
+    endforeach()
+    if(NOT found STREQUAL wanted)
+      message(FATAL_ERROR "${array} ${name}: ${field} '${found}', expected '${wanted}'")
+    endif()
+    message("${name}: ${field} ${found} as expected ${message}")
+  endforeach()
+endfunction()
+check_entries(tests name verdict "${VERDICTS}")
+check_entries(backends backend status "${BACKENDS}")

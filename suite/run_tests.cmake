@@ -1,0 +1,49 @@
+# `lightcts run` through the real binary (issue 6): crashes and hangs of a
+# worker are recorded and the run completes, bad input exits 2, a missing
+# backend is NotSupported, a baseline turns verdicts, a driver that is not the
+# one asked for never passes. Included by scene_tests.cmake.
+set(run_scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes/attenuation)
+set(run_out ${CMAKE_BINARY_DIR}/test-out/run)
+set(one_test attenuation.point-d-half-range.vulkan)
+set(neighbour attenuation.point-d-range.vulkan)
+
+# name | expected exit | run arguments | environment | verdicts | backends | output regex
+function(add_run_test name exit_status args env verdicts backends regex)
+  add_test(NAME run.${name}
+           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DOUT=${run_out}/${name} -DEXIT=${exit_status}
+                   "-DARGS=${args}" "-DENV=${env}" "-DVERDICTS=${verdicts}" "-DBACKENDS=${backends}"
+                   "-DOUTPUT_REGEX=${regex}" -P ${CMAKE_CURRENT_SOURCE_DIR}/run_outcome.cmake)
+  set_tests_properties(run.${name} PROPERTIES LABELS "run;vulkan" SKIP_REGULAR_EXPRESSION "NotSupported: no backend"
+    ENVIRONMENT "${backend_test_environment}")
+endfunction()
+
+set(vulkan_only "--backend;vulkan;--scenes;${run_scenes};--no-mutants")
+add_run_test(killed-worker-is-crash 1 "${vulkan_only}" "LIGHTCTS_TEST_CRASH_ON=${one_test}"
+  "${one_test}=Crash;${neighbour}=Pass" "vulkan=ran" "")
+add_run_test(hung-worker-is-timeout 1 "${vulkan_only};--timeout;3" "LIGHTCTS_TEST_HANG_ON=${one_test}"
+  "${one_test}=Timeout;${neighbour}=Pass" "vulkan=ran" "")
+add_run_test(typo-in-scene-exits-2 2 "--scenes;${CMAKE_CURRENT_SOURCE_DIR}/bad-scenes" "" "" ""
+  "typo-in-range.json:7:[0-9]+: /lights/0/rnage: unknown key")
+add_run_test(unknown-backend-exits-2 2 "--backend;metal;--scenes;${run_scenes}" "" "" "" "unknown backend 'metal'")
+add_run_test(missing-driver-is-not-supported 3 "${vulkan_only}" "VK_ICD_FILENAMES=/nonexistent/icd.json" "" ""
+  "no backend asked for is present")
+add_run_test(wrong-driver-never-passes 1 "${vulkan_only};--expect-driver;no-such-vendor" "" "${one_test}=Crash"
+  "vulkan=error" "does not match the loaded device")
+
+# A baseline: the crash listed becomes ExpectedFail, a listed test that passes
+# UnexpectedPass.
+set(baseline ${run_out}/baseline.txt)
+file(WRITE ${baseline} "# written by suite/run_tests.cmake\n${one_test},Crash  # crashed on purpose (LIGHTCTS_TEST_CRASH_ON)\n${neighbour},Fail  # listed although it passes\n")
+add_run_test(expected-failures-baseline 1 "${vulkan_only};--expected-failures;${baseline}"
+  "LIGHTCTS_TEST_CRASH_ON=${one_test}" "${one_test}=ExpectedFail;${neighbour}=UnexpectedPass" "" "")
+
+# A real run whose report has images (the killing scene of a mutant), opened
+# in headless Chromium: every <img> must load (reports/tests/check_images_load.sh;
+# exit 77, a skip, when Chromium is not installed).
+add_run_test(real-run-report 0 "--backend;vulkan;--scenes;${run_scenes};--mutant;distance-clamp-1e-4" "" ""
+  "vulkan=ran" "mutants: 1 killed, 0 survived")
+set_tests_properties(run.real-run-report PROPERTIES FIXTURES_SETUP real-run)
+add_test(NAME run.real-run-report-images-load-in-chromium
+         COMMAND ${PROJECT_SOURCE_DIR}/reports/tests/check_images_load.sh ${run_out}/real-run-report)
+set_tests_properties(run.real-run-report-images-load-in-chromium PROPERTIES LABELS "run;report;vulkan"
+  FIXTURES_REQUIRED real-run SKIP_RETURN_CODE 77)
