@@ -3,6 +3,7 @@
 // `err` with a message a user can act on.
 #pragma once
 
+#include "runner/bench_run.h"
 #include "runner/suite_run.h"
 
 #include <iosfwd>
@@ -45,6 +46,13 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
 // `run` checks its options (unknown backend or mutant, bad scene: exit 2)
 // before any worker starts.
 int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::ostream& err);
+// `lightcts bench` (docs/bench-format.md) and `lightcts bench compare BEFORE AFTER`.
+int runBenchCommand(const runner::BenchOptions& options, std::ostream& out, std::ostream& err);
+int runBenchCompareCommand(const std::string& before, const std::string& after, std::ostream& out,
+                           std::ostream& err);
+// The hidden `lightcts bench-worker KIND ...` that `bench` starts: argv as
+// main received it (KIND is argv[2]); the rest goes to Google Benchmark.
+int runBenchWorker(int argc, char** argv);
 // The hidden `lightcts worker` command that `run` starts (runner/suite_worker.h).
 int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, std::ostream& err);
 

@@ -6,8 +6,13 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <string_view>
 
 int main(int argc, char** argv) {
+  // Started by `bench` only; its arguments belong to Google Benchmark, so
+  // they bypass the parser below.
+  if (argc >= 2 && std::string_view(argv[1]) == "bench-worker") return app::runBenchWorker(argc, argv);
+
   CLI::App cli{"lightcts: conformance and benchmark suite for one real-time lighting model"};
   cli.require_subcommand(1);
   cli.set_help_all_flag("--help-all", "Show every subcommand's options");
@@ -71,6 +76,17 @@ int main(int argc, char** argv) {
   runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
   runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
+  runner::BenchOptions bench;
+  std::vector<std::string> compareFiles;
+  auto* benchCmd = cli.add_subcommand("bench", "Benchmarks: speed against error per backend, cost curves (issue 7)");
+  benchCmd->add_option("--backend", bench.backends, "Backends or combinations, as for run (default: every one)");
+  benchCmd->add_option("--out", bench.outDir, "Output folder: bench.json, index.html, <backend>.html");
+  benchCmd->add_option("--scenes", bench.scenesDir, "Scene folder")->default_val("suite/scenes");
+  benchCmd->add_flag("--quick", bench.quick, "Fewer points and repetitions (a smoke test, not a measurement)");
+  benchCmd->add_option("--timeout", bench.timeoutSeconds, "Seconds one benchmark process may take")->default_val(900);
+  auto* benchCompareCmd = benchCmd->add_subcommand("compare", "Compare two bench.json files with a U-test");
+  benchCompareCmd->add_option("files", compareFiles, "BEFORE.json AFTER.json")->required()->expected(2);
+
   // Started by `run` only: one backend combination's tests, results as JSON lines.
   auto* workerCmd = cli.add_subcommand("worker", "");
   workerCmd->group("");
@@ -100,6 +116,16 @@ int main(int argc, char** argv) {
     run.workerExecutable = "/proc/self/exe";
     for (int i = 0; i < argc; ++i) run.commandLine += (i ? " " : "") + std::string(argv[i]);
     return app::runSuiteCommand(run, o, e);
+  }
+  if (*benchCompareCmd) return app::runBenchCompareCommand(compareFiles[0], compareFiles[1], o, e);
+  if (*benchCmd) {
+    if (bench.outDir.empty()) {
+      e << "lightcts: bench: --out is required\n";
+      return app::kExitBadInput;
+    }
+    bench.workerExecutable = "/proc/self/exe";
+    for (int i = 0; i < argc; ++i) bench.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return app::runBenchCommand(bench, o, e);
   }
   if (*workerCmd) return app::runWorkerCommand(workerPlan, workerStart, o, e);
   return app::kExitBadInput;

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -66,6 +67,10 @@ class Backend {
   virtual void draw(const lighting::Frame& frame) = 0;
   // The last drawn image: RGBA float, row 0 at the top, A = 1 where drawn.
   virtual imaging::Image readback() = 0;
+  // The device's own time for the last draw(), in milliseconds, from
+  // timestamp queries (Vulkan) or GL_TIME_ELAPSED queries (OpenGL); empty
+  // when the device offers none. Benchmarks report it beside wall time.
+  virtual std::optional<double> lastDrawDeviceMilliseconds() const { return std::nullopt; }
 
   imaging::Image render(const lighting::Frame& frame) {
     draw(frame);

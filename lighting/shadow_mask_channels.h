@@ -24,6 +24,13 @@ struct ShadowMaskAssignment {
   std::vector<bool> demotedLight;        // per scene light
 };
 
+// Near-linear: earlier holders are found through a uniform grid over the
+// candidates' centres (shadow_mask_channels.cpp, docs/performance.md); the
+// result is exactly the greedy of SPEC 5.3.
 ShadowMaskAssignment assignShadowMaskChannels(const Scene& scene);
+
+// The greedy of SPEC 5.3 as written: every light tested against every earlier
+// holder, O(n^2). The definition the grid version is tested against.
+ShadowMaskAssignment assignShadowMaskChannelsBruteForce(const Scene& scene);
 
 }  // namespace lighting

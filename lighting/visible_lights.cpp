@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <utility>
 
 namespace lighting {
 
@@ -20,26 +21,39 @@ bool isLightVisible(const Light& light, const std::array<FrustumPlane, 6>& frust
 LightSelection selectVisibleLights(const Scene& scene, const CameraView& view,
                                    const ShadowMaskAssignment& shadowMask) {
   const std::array<FrustumPlane, 6> frustum = view.frustumPlanes();
-  std::vector<int> directional, other;
-  for (int i = 0; i < int(scene.lights.size()); ++i) {
-    const Light& l = scene.lights[i];
-    if (l.mode == LightMode::Baked || shadowMask.demotedLight[i]) continue;
-    if (!isLightVisible(l, frustum)) continue;
-    (l.type == LightType::Directional ? directional : other).push_back(i);
-  }
-  // Directional by luminance(finalColor) descending; the others by squared
-  // distance to the camera ascending; stable sorts give ties to the lower index.
   auto brightness = [&](int i) { return luminance(scene.lights[i].finalColor()); };
   auto distanceSquared = [&](int i) {
     const Vec3 d = scene.lights[i].position - view.camera.position;
     return glm::dot(d, d);
   };
-  std::stable_sort(directional.begin(), directional.end(),
-                   [&](int a, int b) { return brightness(a) > brightness(b); });
-  std::stable_sort(other.begin(), other.end(),
-                   [&](int a, int b) { return distanceSquared(a) < distanceSquared(b); });
+  // (sort key, scene index), the key computed once per light rather than per
+  // comparison (a comparison reading scene.lights misses the cache at 100k lights).
+  std::vector<std::pair<double, int>> directionalKeys, otherKeys;
+  for (int i = 0; i < int(scene.lights.size()); ++i) {
+    const Light& l = scene.lights[i];
+    if (l.mode == LightMode::Baked || shadowMask.demotedLight[i]) continue;
+    if (!isLightVisible(l, frustum)) continue;
+    if (l.type == LightType::Directional) {
+      directionalKeys.emplace_back(brightness(i), i);
+    } else {
+      otherKeys.emplace_back(distanceSquared(i), i);
+    }
+  }
+  // Directional by luminance(finalColor) descending; the others by squared
+  // distance to the camera ascending; stable sorts over ascending scene
+  // indices give ties to the lower index.
+  std::stable_sort(directionalKeys.begin(), directionalKeys.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::stable_sort(otherKeys.begin(), otherKeys.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<int> directional, other;
+  directional.reserve(directionalKeys.size());
+  other.reserve(otherKeys.size());
+  for (const auto& [key, i] : directionalKeys) directional.push_back(i);
+  for (const auto& [key, i] : otherKeys) other.push_back(i);
 
   LightSelection selection;
+  selection.visible.reserve(directional.size() + other.size());
   auto keep = [&](int light, std::vector<int>& packedArray, std::size_t limit) {
     int packed = -1;
     if (packedArray.size() < limit) {

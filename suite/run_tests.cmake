@@ -47,3 +47,21 @@ add_test(NAME run.real-run-report-images-load-in-chromium
          COMMAND ${PROJECT_SOURCE_DIR}/reports/tests/check_images_load.sh ${run_out}/real-run-report)
 set_tests_properties(run.real-run-report-images-load-in-chromium PROPERTIES LABELS "run;report;vulkan"
   FIXTURES_REQUIRED real-run SKIP_RETURN_CODE 77)
+
+# `lightcts bench --quick` end to end on Vulkan (issue 7): bench.json and the
+# pages are written, and every plot renders in headless Chromium
+# (reports/tests/check_svgs_render.sh; exit 77, a skip, without Chromium).
+# A smoke test of the wiring, never a measurement: speed is not asserted.
+set(bench_out ${CMAKE_BINARY_DIR}/test-out/bench-quick)
+add_test(NAME bench.command-quick
+         COMMAND lightcts bench --quick --backend vulkan --scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes --out ${bench_out})
+set_tests_properties(bench.command-quick PROPERTIES LABELS "bench;vulkan" FIXTURES_SETUP bench-quick
+  SKIP_RETURN_CODE 3 TIMEOUT 300)
+add_test(NAME bench.command-quick-plots-render-in-chromium
+         COMMAND ${PROJECT_SOURCE_DIR}/reports/tests/check_svgs_render.sh ${bench_out})
+set_tests_properties(bench.command-quick-plots-render-in-chromium PROPERTIES LABELS "bench;report"
+  FIXTURES_REQUIRED bench-quick SKIP_RETURN_CODE 77)
+add_test(NAME bench.compare-against-itself-finds-no-regression
+         COMMAND lightcts bench compare ${bench_out}/bench.json ${bench_out}/bench.json)
+set_tests_properties(bench.compare-against-itself-finds-no-regression PROPERTIES LABELS "bench"
+  FIXTURES_REQUIRED bench-quick)

@@ -11,6 +11,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -27,6 +30,40 @@ bool hasExtension(const char* extensions, std::string_view name) {
   }
   return false;
 }
+
+// eglGetPlatformDisplayEXT returns one display per platform and device, and
+// eglTerminate ends it for every context on it, however often it was
+// initialised. So each backend holds a use of its display, and only the last
+// use terminates it: a second backend's end must not kill the first one's
+// context (backends/tests/two_backends_test.cpp).
+class DisplayUse {
+ public:
+  DisplayUse(EGLDisplay display, PFNEGLTERMINATEPROC terminate) : display_(display), terminate_(terminate) {
+    const std::lock_guard lock(mutex());
+    ++users()[display_];
+  }
+  ~DisplayUse() {
+    const std::lock_guard lock(mutex());
+    if (--users()[display_] == 0) {
+      users().erase(display_);
+      terminate_(display_);
+    }
+  }
+  DisplayUse(const DisplayUse&) = delete;
+  DisplayUse& operator=(const DisplayUse&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static std::map<EGLDisplay, int>& users() {
+    static std::map<EGLDisplay, int> u;
+    return u;
+  }
+  EGLDisplay display_;
+  PFNEGLTERMINATEPROC terminate_;
+};
 
 class EglContext final : public GlContext {
  public:
@@ -61,6 +98,7 @@ class EglContext final : public GlContext {
       display_ = EGL_NO_DISPLAY;  // nothing to terminate
       throw NotSupportedError("eglInitialize failed (EGL error 0x" + hex(eglGetError()) + ")");
     }
+    displayUse_.emplace(display_, terminate_);
     if (!eglBindAPI(EGL_OPENGL_API)) throw NotSupportedError("EGL cannot bind the desktop OpenGL API");
 
     // No surface is ever made, so no config is needed where EGL allows it.
@@ -84,7 +122,12 @@ class EglContext final : public GlContext {
     if (display_ == EGL_NO_DISPLAY) return;
     makeCurrent_(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != EGL_NO_CONTEXT) destroyContext_(display_, context_);
-    terminate_(display_);
+    // displayUse_ terminates the display if this was its last use.
+  }
+
+  void makeCurrent() override {
+    if (!makeCurrent_(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw DriverError("eglMakeCurrent failed: the EGL context cannot be made current again");
   }
 
   void* getProcAddress(const char* name) const override {
@@ -128,6 +171,7 @@ class EglContext final : public GlContext {
   SharedLibrary library_;
   PFNEGLGETPROCADDRESSPROC getProcAddress_ = nullptr;
   PFNEGLMAKECURRENTPROC makeCurrent_ = nullptr;
+  std::optional<DisplayUse> displayUse_;  // after the functions it uses
   PFNEGLDESTROYCONTEXTPROC destroyContext_ = nullptr;
   PFNEGLTERMINATEPROC terminate_ = nullptr;
   EGLDisplay display_ = EGL_NO_DISPLAY;

@@ -7,6 +7,7 @@
 #include "backends/packed_geometry.h"
 #include "lighting/gpu_packing.h"
 
+#include <chrono>
 #include <cstring>
 #include <functional>
 #include <optional>
@@ -15,6 +16,8 @@ namespace backends::gl {
 namespace {
 
 using ContextFactory = std::function<std::unique_ptr<GlContext>(const BackendOptions&)>;
+
+constexpr double kTimerSlackMilliseconds = 0.1;
 
 std::string glString(const GlFunctions& gl, GLenum name) {
   const GLubyte* s = gl.glGetString(name);
@@ -40,16 +43,34 @@ class GlBackend final : public Backend {
       throw NotSupportedError("asked for Mesa's " + wanted + " but the context runs on '" + info_.name +
                               "' (the driver is missing, or another was already loaded in this process)");
     programs_.emplace(gl_);
+    // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
+    // its counter 0 bits: it then has no clock, and draws are not timed.
+    GLint timerBits = 0;
+    gl_.glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &timerBits);
+    if (timerBits > 0) timer_ = makeQuery(gl_);
     gl_.check("creating the context");
+  }
+
+  // The GL objects below are deleted in this backend's context, whichever
+  // context another backend made current since.
+  ~GlBackend() override {
+    try {
+      context_->makeCurrent();
+    } catch (const std::exception&) {
+      // Nothing to delete the names in; the context's own destruction frees them.
+    }
   }
 
   DeviceInfo device() const override { return info_; }
 
   void preparePipeline(const lighting::Frame& frame) override {
+    context_->makeCurrent();
     programs_->program(shaders::constantValues(frame.features, options_.variant));
   }
 
   void draw(const lighting::Frame& frame) override {
+    context_->makeCurrent();
+    lastDrawMilliseconds_.reset();
     const GLuint program = programs_->program(shaders::constantValues(frame.features, options_.variant));
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     ensureGeometry(frame);
@@ -71,6 +92,14 @@ class GlBackend final : public Backend {
     const float farDepth = 1.0f;
     gl_.glClearBufferfv(GL_COLOR, 0, background);
     gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    // The query encloses the draws. It begins after the clears on purpose:
+    // Mesa binds a newly bound framebuffer to the driver only at the first
+    // clear or draw, and llvmpipe bins a GL_TIME_ELAPSED query's start into
+    // the framebuffer bound when it begins; begun before the first clear into
+    // a new framebuffer, the start lands in the old one, never runs, and the
+    // result is the whole CLOCK_MONOTONIC reading (measured: 4.4e6 ms).
+    const auto queryStart = std::chrono::steady_clock::now();
+    if (timer_.get()) gl_.glBeginQuery(GL_TIME_ELAPSED, timer_.get());
 
     gl_.glUseProgram(program);
     gl_.glBindVertexArray(vertexArray_.get());
@@ -86,15 +115,33 @@ class GlBackend final : public Backend {
                                    range.vertexOffset);
     }
     gl_.glBindVertexArray(0);
+    if (timer_.get()) gl_.glEndQuery(GL_TIME_ELAPSED);
     gl_.glFinish();  // draw() returns when the image is complete, as on Vulkan
-    gl_.check(("drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath).c_str());
+    const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
+    gl_.check(when.c_str());
+    if (timer_.get()) {
+      const double hostMilliseconds =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - queryStart).count();
+      // After glFinish the result is there: reading it waits for nothing.
+      GLuint64 nanoseconds = 0;
+      gl_.glGetQueryObjectui64v(timer_.get(), GL_QUERY_RESULT, &nanoseconds);
+      gl_.check((when + " (reading its GL_TIME_ELAPSED query)").c_str());
+      // The device ran the query's commands after glBeginQuery was called and
+      // before glFinish returned; a longer time is a driver's wrong answer,
+      // not a time (kTimerSlackMilliseconds: the two clocks' rounding).
+      const double milliseconds = double(nanoseconds) * 1e-6;
+      if (milliseconds <= hostMilliseconds + kTimerSlackMilliseconds) lastDrawMilliseconds_ = milliseconds;
+    }
     drawn_ = true;
   }
+
+  std::optional<double> lastDrawDeviceMilliseconds() const override { return lastDrawMilliseconds_; }
 
   // OpenGL's row 0 is the bottom of the image; rows are flipped here so that
   // row 0 is the top (SPEC 1).
   imaging::Image readback() override {
     if (!drawn_) throw DriverError("readback() before any draw()");
+    context_->makeCurrent();
     imaging::Image image(width_, height_, 4);
     std::vector<float> rows(image.pixels.size());
     gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
@@ -190,6 +237,8 @@ class GlBackend final : public Backend {
   GlName color_, depth_, framebuffer_;
   GlName vertexArray_, vertices_, indices_;
   GlName frameUniforms_, objectUniforms_;
+  GlName timer_;  // the GL_TIME_ELAPSED query; none when the driver's timer has 0 bits
+  std::optional<double> lastDrawMilliseconds_;
   std::size_t objectStride_ = 0;
   std::vector<ObjectRange> objects_;
   std::shared_ptr<const lighting::PreparedScene> scene_;

@@ -14,6 +14,10 @@ class GlContext {
   virtual ~GlContext() = default;
   // The address of a GL function in this context, or null.
   virtual void* getProcAddress(const char* name) const = 0;
+  // Makes this context current on the calling thread. Every GL call of a
+  // backend goes through its own context, also when another backend made
+  // (or released) a context since. Throws DriverError when it cannot.
+  virtual void makeCurrent() = 0;
 };
 
 // Which Mesa driver (GALLIUM_DRIVER) a GL backend is to run on: `--driver`,

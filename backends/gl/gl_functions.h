@@ -63,7 +63,13 @@ namespace backends::gl {
   X(PFNGLDRAWELEMENTSBASEVERTEXPROC, glDrawElementsBaseVertex)     \
   X(PFNGLPIXELSTOREIPROC, glPixelStorei)                           \
   X(PFNGLREADPIXELSPROC, glReadPixels)                             \
-  X(PFNGLFINISHPROC, glFinish)
+  X(PFNGLFINISHPROC, glFinish)                                     \
+  X(PFNGLGENQUERIESPROC, glGenQueries)                             \
+  X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                       \
+  X(PFNGLGETQUERYIVPROC, glGetQueryiv)                             \
+  X(PFNGLBEGINQUERYPROC, glBeginQuery)                             \
+  X(PFNGLENDQUERYPROC, glEndQuery)                                 \
+  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)
 
 struct GlFunctions {
 #define LIGHTCTS_GL_MEMBER(type, name) type name = nullptr;

@@ -29,4 +29,8 @@ GlName makeRenderbuffer(const GlFunctions& gl) {
   return makeName(gl, &GlFunctions::glGenRenderbuffers, &GlFunctions::glDeleteRenderbuffers);
 }
 
+GlName makeQuery(const GlFunctions& gl) {
+  return makeName(gl, &GlFunctions::glGenQueries, &GlFunctions::glDeleteQueries);
+}
+
 }  // namespace backends::gl

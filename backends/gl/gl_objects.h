@@ -43,5 +43,6 @@ GlName makeBuffer(const GlFunctions& gl);
 GlName makeVertexArray(const GlFunctions& gl);
 GlName makeFramebuffer(const GlFunctions& gl);
 GlName makeRenderbuffer(const GlFunctions& gl);
+GlName makeQuery(const GlFunctions& gl);
 
 }  // namespace backends::gl

@@ -19,7 +19,7 @@ class OsmesaContext final : public GlContext {
       throw NotSupportedError("gl-osmesa has one device, Mesa's software driver; --device does not apply");
     auto createContext =
         library_.require<OSMesaContext (*)(const int*, OSMesaContext)>("OSMesaCreateContextAttribs");
-    auto makeCurrent = library_.require<GLboolean (*)(OSMesaContext, void*, GLenum, GLsizei, GLsizei)>("OSMesaMakeCurrent");
+    makeCurrent_ = library_.require<GLboolean (*)(OSMesaContext, void*, GLenum, GLsizei, GLsizei)>("OSMesaMakeCurrent");
     destroyContext_ = library_.require<void (*)(OSMesaContext)>("OSMesaDestroyContext");
     getProcAddress_ = library_.require<OSMESAproc (*)(const char*)>("OSMesaGetProcAddress");
 
@@ -28,7 +28,7 @@ class OsmesaContext final : public GlContext {
                               OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
     context_ = createContext(attributes, nullptr);
     if (!context_) throw NotSupportedError("OSMesa cannot create an OpenGL 3.3 core context");
-    if (!makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1))
+    if (!makeCurrent_(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1))
       throw NotSupportedError("OSMesaMakeCurrent failed");
   }
 
@@ -38,8 +38,14 @@ class OsmesaContext final : public GlContext {
 
   void* getProcAddress(const char* name) const override { return reinterpret_cast<void*>(getProcAddress_(name)); }
 
+  void makeCurrent() override {
+    if (!makeCurrent_(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1))
+      throw DriverError("OSMesaMakeCurrent failed");
+  }
+
  private:
   SharedLibrary library_;
+  GLboolean (*makeCurrent_)(OSMesaContext, void*, GLenum, GLsizei, GLsizei) = nullptr;
   void (*destroyContext_)(OSMesaContext) = nullptr;
   OSMESAproc (*getProcAddress_)(const char*) = nullptr;
   OSMesaContext context_ = nullptr;

@@ -3,6 +3,7 @@
 // and that the specialised pipeline draws what the full one draws.
 #include "backends/backend.h"
 #include "backends/tests/suite_scene_renders.h"
+#include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/vulkan_device.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
@@ -45,6 +46,21 @@ TEST(VulkanDeviceChoice, NothingMatchingIsNotSupportedAndListsTheDevices) {
   }
   EXPECT_THROW(backends::vulkan::chooseDevice(list, "radeon"), NotSupportedError);
   EXPECT_THROW(backends::vulkan::chooseDevice({}, ""), NotSupportedError);
+}
+
+// Timestamps count modulo 2^timestampValidBits; the interval between two is
+// their difference in that modulus, in timestampPeriod nanoseconds per tick.
+TEST(VulkanTimestamps, IntervalIsTheDifferenceModuloTheValidBitsTimesThePeriod) {
+  using backends::vulkan::timestampIntervalMilliseconds;
+  EXPECT_DOUBLE_EQ(timestampIntervalMilliseconds(1'000, 3'501'000, 64, 1.0f), 3.5);
+  EXPECT_DOUBLE_EQ(timestampIntervalMilliseconds(10, 20, 64, 2.5f), 25e-6);
+  // A 36-bit counter that wrapped between the two writes.
+  const std::uint64_t top = (std::uint64_t(1) << 36) - 1;
+  EXPECT_DOUBLE_EQ(timestampIntervalMilliseconds(top - 99, 900, 36, 1.0f), 1'000e-6);
+  // Bits above the valid ones are not part of the count.
+  EXPECT_DOUBLE_EQ(timestampIntervalMilliseconds(std::uint64_t(7) << 40 | 100, 300, 36, 1.0f), 200e-6);
+  // A full 64-bit counter wraps at 2^64.
+  EXPECT_DOUBLE_EQ(timestampIntervalMilliseconds(~std::uint64_t(0), 999'999, 64, 1.0f), 1.0);
 }
 
 // A backend on the first device with validation on, or a skip.

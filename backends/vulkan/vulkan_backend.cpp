@@ -1,5 +1,6 @@
 #include "backends/vulkan/vulkan_backend.h"
 
+#include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/forward_pipeline.h"
 #include "backends/vulkan/frame_resources.h"
 #include "backends/vulkan/pipeline_cache_file.h"
@@ -34,6 +35,7 @@ class VulkanBackend final : public Backend {
                                                          .commandBufferCount = 1});
     commands_ = std::move(buffers.front());
     fence_ = vk::raii::Fence(device_.device, vk::FenceCreateInfo{});
+    if (canTimeDraws(device_)) timestamps_.emplace(device_);
     checkValidation("creating the device");
   }
 
@@ -45,6 +47,7 @@ class VulkanBackend final : public Backend {
   }
 
   void draw(const lighting::Frame& frame) override {
+    lastDrawMilliseconds_.reset();
     const lighting::ImageSize size = frame.scene().image;
     const vk::Extent2D extent{std::uint32_t(size.width), std::uint32_t(size.height)};
     if (!target_ || target_->color.extent != extent) {
@@ -64,10 +67,23 @@ class VulkanBackend final : public Backend {
     for (std::size_t o = 0; o < objectCount; ++o) uniforms_->write(o, lighting::packObjectBlock(frame, int(o)));
 
     const vk::raii::Pipeline& pipeline = pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
-    submit([&](const vk::raii::CommandBuffer& cb) { recordForwardPass(cb, pipeline); },
-           "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath);
+    const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
+    submit(
+        [&](const vk::raii::CommandBuffer& cb) {
+          if (timestamps_) timestamps_->recordBegin(cb);
+          recordForwardPass(cb, pipeline);
+          if (timestamps_) timestamps_->recordEnd(cb);
+        },
+        when);
+    if (timestamps_) {
+      const double milliseconds = timestamps_->milliseconds();
+      checkValidation(when + " (reading its timestamps)");
+      lastDrawMilliseconds_ = milliseconds;
+    }
     drawn_ = true;
   }
+
+  std::optional<double> lastDrawDeviceMilliseconds() const override { return lastDrawMilliseconds_; }
 
   imaging::Image readback() override {
     if (!drawn_) throw DriverError("readback() before any draw()");
@@ -171,6 +187,8 @@ class VulkanBackend final : public Backend {
   std::optional<RenderTarget> target_;
   std::optional<SceneGeometry> geometry_;
   std::optional<UniformBuffers> uniforms_;
+  std::optional<DrawTimestamps> timestamps_;  // empty when the queue writes no timestamps
+  std::optional<double> lastDrawMilliseconds_;
   bool drawn_ = false;
 };
 

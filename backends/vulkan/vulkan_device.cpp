@@ -129,6 +129,7 @@ VulkanDevice::VulkanDevice(const VulkanInstance& instance, const std::string& se
   });
   if (graphics == families.end()) throw NotSupportedError(info.name + " has no graphics queue");
   queueFamily = std::uint32_t(graphics - families.begin());
+  timestampValidBits = graphics->timestampValidBits;
 
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queueInfo{.queueFamilyIndex = queueFamily, .queueCount = 1, .pQueuePriorities = &priority};

@@ -47,6 +47,7 @@ struct VulkanDevice {
   vk::raii::PhysicalDevice physical{nullptr};
   vk::PhysicalDeviceLimits limits;
   std::uint32_t queueFamily = 0;
+  std::uint32_t timestampValidBits = 0;  // of the queue family; 0: it writes no timestamps
   vk::raii::Device device{nullptr};
   vk::raii::Queue queue{nullptr};
 

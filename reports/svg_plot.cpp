@@ -1,0 +1,272 @@
+#include "reports/svg_plot.h"
+
+#include "reports/html_escape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace reports::svg {
+namespace {
+
+constexpr double kLeft = 78, kRight = 180, kTop = 34, kBottom = 52;
+
+std::string num(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", v);
+  return text;
+}
+
+bool usable(Scale scale, double v) { return std::isfinite(v) && (scale == Scale::Linear || v > 0); }
+
+struct Range {
+  Scale scale;
+  double low = 0, high = 1;
+  double t(double v) const {  // 0..1 across the axis
+    if (scale == Scale::Linear) return (v - low) / (high - low);
+    return (std::log(v) - std::log(low)) / (std::log(high) - std::log(low));
+  }
+};
+
+Range rangeOf(const Axis& axis, std::vector<double> values) {
+  Range r{axis.scale};
+  values.erase(std::remove_if(values.begin(), values.end(), [&](double v) { return !usable(axis.scale, v); }),
+               values.end());
+  if (values.empty()) {
+    r.low = axis.scale == Scale::Linear ? 0 : 1;
+    r.high = axis.scale == Scale::Linear ? 1 : 10;
+    return r;
+  }
+  double lo = *std::min_element(values.begin(), values.end());
+  double hi = *std::max_element(values.begin(), values.end());
+  if (axis.scale == Scale::Linear) {
+    if (axis.fromZero && lo >= 0) lo = 0;
+    if (hi == lo) {
+      const double pad = lo == 0 ? 1 : std::abs(lo) * 0.1;
+      lo -= axis.fromZero && lo == 0 ? 0 : pad;
+      hi += pad;
+    }
+    const double pad = (hi - lo) * 0.05;
+    r.low = (axis.fromZero && lo == 0) ? 0 : lo - pad;
+    r.high = hi + pad;
+  } else {
+    if (hi == lo) lo /= 2, hi *= 2;
+    const double pad = std::pow(hi / lo, 0.05);
+    r.low = lo / pad;
+    r.high = hi * pad;
+  }
+  return r;
+}
+
+std::vector<double> linearTicks(double low, double high) {
+  std::vector<double> out;
+  const double raw = (high - low) / 6;
+  if (!(raw > 0)) return out;
+  const double magnitude = std::pow(10, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude >= raw) {
+      step = m * magnitude;
+      break;
+    }
+  for (double v = std::ceil(low / step) * step; v <= high + step * 1e-9; v += step)
+    out.push_back(std::abs(v) < step * 1e-9 ? 0 : v);
+  return out;
+}
+
+}  // namespace
+
+const std::string& colour(std::size_t index) {
+  static const std::vector<std::string> colours = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                                   "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+  return colours[index % colours.size()];
+}
+
+std::vector<double> ticks(Scale scale, double low, double high) {
+  std::vector<double> out;
+  if (scale == Scale::Log10) {
+    const int first = int(std::floor(std::log10(low))), last = int(std::ceil(std::log10(high)));
+    const double decades = std::log10(high / low);
+    const std::vector<double> steps = decades <= 1.2 ? std::vector<double>{1, 1.5, 2, 3, 5, 7}
+                                      : decades <= 2.5 ? std::vector<double>{1, 2, 5}
+                                                       : std::vector<double>{1};
+    for (int e = first; e <= last; ++e)
+      for (double m : steps) {
+        const double v = m * std::pow(10.0, e);
+        if (v >= low * (1 - 1e-12) && v <= high * (1 + 1e-12)) out.push_back(v);
+      }
+  } else if (scale == Scale::Log2) {
+    std::vector<double> all;
+    for (int e = int(std::floor(std::log2(low))); e <= int(std::ceil(std::log2(high))); ++e) {
+      const double v = std::ldexp(1.0, e);
+      if (v >= low * (1 - 1e-12) && v <= high * (1 + 1e-12)) all.push_back(v);
+    }
+    const std::size_t every = all.size() > 10 ? (all.size() + 9) / 10 : 1;
+    for (std::size_t i = 0; i < all.size(); i += every) out.push_back(all[i]);
+  }
+  if (out.size() < 2) out = linearTicks(low, high);
+  return out;
+}
+
+std::string tickText(double value) {
+  char text[32];
+  const double a = std::abs(value);
+  if (a >= 1e6 && a < 1e15) std::snprintf(text, sizeof text, "%gM", value / 1e6);
+  else if (a >= 1e3 && a < 1e6) std::snprintf(text, sizeof text, "%gk", value / 1e3);
+  else std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+std::string render(const Plot& plot) {
+  const double W = plot.width, H = plot.height;
+  const double x0 = kLeft, x1 = W - kRight, y0 = kTop, y1 = H - kBottom;
+
+  std::vector<double> xs, ys;
+  for (const Series& s : plot.series)
+    for (const Point& p : s.points) {
+      if (!usable(plot.x.scale, p.x) || !usable(plot.y.scale, p.y)) continue;
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+      if (p.yLow) ys.push_back(*p.yLow);
+      if (p.yHigh) ys.push_back(*p.yHigh);
+    }
+  const Range rx = rangeOf(plot.x, xs), ry = rangeOf(plot.y, ys);
+  const auto X = [&](double v) { return x0 + rx.t(v) * (x1 - x0); };
+  const auto Y = [&](double v) { return y1 - ry.t(v) * (y1 - y0); };
+
+  std::ostringstream out;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plot\" width=\"" << plot.width << "\" height=\""
+      << plot.height << "\" viewBox=\"0 0 " << plot.width << ' ' << plot.height << "\" role=\"img\" aria-label=\""
+      << escapeText(plot.title) << "\">\n";
+  out << "<title>" << escapeText(plot.title) << "</title>\n";
+  out << "<rect x=\"0\" y=\"0\" width=\"" << plot.width << "\" height=\"" << plot.height
+      << "\" fill=\"#fff\"/>\n";
+  out << "<text x=\"" << num(x0) << "\" y=\"20\" font-size=\"14\" font-weight=\"bold\">" << escapeText(plot.title)
+      << "</text>\n";
+
+  // Grid, ticks and tick labels.
+  out << "<g class=\"axes\" font-size=\"11\" fill=\"#444\">\n";
+  for (double v : ticks(rx.scale, rx.low, rx.high)) {
+    if (!usable(rx.scale, v)) continue;
+    const std::string px = num(X(v));
+    out << "<line x1=\"" << px << "\" y1=\"" << num(y0) << "\" x2=\"" << px << "\" y2=\"" << num(y1)
+        << "\" stroke=\"#e4e4e4\"/><line x1=\"" << px << "\" y1=\"" << num(y1) << "\" x2=\"" << px << "\" y2=\""
+        << num(y1 + 5) << "\" stroke=\"#444\"/><text x=\"" << px << "\" y=\"" << num(y1 + 18)
+        << "\" text-anchor=\"middle\">" << escapeText(tickText(v)) << "</text>\n";
+  }
+  for (double v : ticks(ry.scale, ry.low, ry.high)) {
+    if (!usable(ry.scale, v)) continue;
+    const std::string py = num(Y(v));
+    out << "<line x1=\"" << num(x0) << "\" y1=\"" << py << "\" x2=\"" << num(x1) << "\" y2=\"" << py
+        << "\" stroke=\"#e4e4e4\"/><line x1=\"" << num(x0 - 5) << "\" y1=\"" << py << "\" x2=\"" << num(x0)
+        << "\" y2=\"" << py << "\" stroke=\"#444\"/><text x=\"" << num(x0 - 8) << "\" y=\"" << py
+        << "\" dy=\"4\" text-anchor=\"end\">" << escapeText(tickText(v)) << "</text>\n";
+  }
+  out << "<rect x=\"" << num(x0) << "\" y=\"" << num(y0) << "\" width=\"" << num(x1 - x0) << "\" height=\""
+      << num(y1 - y0) << "\" fill=\"none\" stroke=\"#444\"/>\n";
+  const auto scaleNote = [](Scale s) {
+    return s == Scale::Log10 ? " (log)" : s == Scale::Log2 ? " (log2)" : "";
+  };
+  out << "<text x=\"" << num((x0 + x1) / 2) << "\" y=\"" << num(H - 12) << "\" text-anchor=\"middle\" font-size=\"12\">"
+      << escapeText(plot.x.label + scaleNote(plot.x.scale)) << "</text>\n";
+  out << "<text transform=\"translate(16 " << num((y0 + y1) / 2)
+      << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"12\">"
+      << escapeText(plot.y.label + scaleNote(plot.y.scale)) << "</text>\n";
+  out << "</g>\n";
+
+  // Series.
+  struct Box { double x0, y0, x1, y1; };
+  struct Label { double px, py; const Point* p; };
+  std::vector<Box> boxes;
+  std::vector<Label> labels;
+  for (const Series& s : plot.series) {
+    std::vector<const Point*> shown;
+    for (const Point& p : s.points)
+      if (usable(plot.x.scale, p.x) && usable(plot.y.scale, p.y)) shown.push_back(&p);
+    if (shown.empty()) continue;
+    out << "<g class=\"series";
+    if (!s.cssClass.empty()) out << ' ' << escapeText(s.cssClass);
+    out << "\" data-series=\""
+        << escapeText(s.name) << "\">\n";
+    if (s.line && shown.size() >= 2) {
+      out << "<path fill=\"none\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"1.6\""
+          << (s.dashed ? " stroke-dasharray=\"5 4\"" : "") << " d=\"";
+      for (std::size_t i = 0; i < shown.size(); ++i) {
+        const double px = X(shown[i]->x), py = Y(shown[i]->y);
+        if (i == 0) out << 'M' << num(px) << ' ' << num(py);
+        else if (s.steps) out << " H" << num(px) << " V" << num(py);
+        else out << " L" << num(px) << ' ' << num(py);
+      }
+      out << "\"/>\n";
+    }
+    for (const Point* p : shown) {
+      const double px = X(p->x), py = Y(p->y);
+      if (p->yLow && p->yHigh && usable(plot.y.scale, *p->yLow) && usable(plot.y.scale, *p->yHigh))
+        out << "<line x1=\"" << num(px) << "\" y1=\"" << num(Y(*p->yLow)) << "\" x2=\"" << num(px) << "\" y2=\""
+            << num(Y(*p->yHigh)) << "\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"1\"/>\n";
+      if (s.markers) {
+        if (p->highlight)
+          out << "<circle cx=\"" << num(px) << "\" cy=\"" << num(py)
+              << "\" r=\"7.5\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>\n";
+        out << "<circle class=\"pt" << (p->highlight ? " front" : "") << "\" data-point=\"" << escapeText(p->id)
+            << "\" cx=\"" << num(px) << "\" cy=\"" << num(py) << "\" r=\"4\" fill=\"" << escapeText(s.colour)
+            << "\"><title>" << escapeText(p->id) << "</title></circle>\n";
+      }
+      if (s.markers) boxes.push_back({px - 5, py - 5, px + 5, py + 5});
+      if (!p->label.empty()) labels.push_back({px, py, p});
+    }
+    out << "</g>\n";
+  }
+
+  // Point labels, each at the first of four places beside its point that
+  // overlaps no marker and no label placed before (else the first place).
+  out << "<g class=\"labels\" font-size=\"10\">\n";
+  for (const auto& [px, py, p] : labels) {
+    const double w = 6.0 * double(p->label.size()) * (p->highlight ? 1.08 : 1.0), h = 11;
+    struct Place { double dx, dy; bool end; };
+    const Place places[] = {{7, -7, false}, {7, 15, false}, {-7, -7, true}, {-7, 15, true}};
+    Box chosen{};
+    const Place* best = &places[0];
+    for (const Place& at : places) {
+      const double left = at.end ? px + at.dx - w : px + at.dx;
+      const Box box{left, py + at.dy - 9, left + w, py + at.dy - 9 + h};
+      const bool inside = box.x0 >= x0 && box.x1 <= x1 + kRight - 10 && box.y0 >= y0 - 10 && box.y1 <= y1;
+      const bool clear = std::none_of(boxes.begin(), boxes.end(), [&](const Box& b) {
+        return box.x0 < b.x1 && b.x0 < box.x1 && box.y0 < b.y1 && b.y0 < box.y1;
+      });
+      if (&at == &places[0]) chosen = box;
+      if (inside && clear) {
+        best = &at;
+        chosen = box;
+        break;
+      }
+    }
+    boxes.push_back(chosen);
+    out << "<text x=\"" << num(px + best->dx) << "\" y=\"" << num(py + best->dy) << "\""
+        << (best->end ? " text-anchor=\"end\"" : "") << (p->highlight ? " font-weight=\"bold\"" : "") << ">"
+        << escapeText(p->label) << "</text>\n";
+  }
+  out << "</g>\n";
+
+  // Legend.
+  out << "<g class=\"legend\" font-size=\"11\">\n";
+  double ly = y0 + 8;
+  for (const Series& s : plot.series) {
+    if (s.name.empty()) continue;
+    const double lx = x1 + 14;
+    out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 18) << "\" y2=\"" << num(ly)
+        << "\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"2\""
+        << (s.dashed ? " stroke-dasharray=\"4 3\"" : "") << "/>";
+    if (s.markers)
+      out << "<circle cx=\"" << num(lx + 9) << "\" cy=\"" << num(ly) << "\" r=\"3.5\" fill=\""
+          << escapeText(s.colour) << "\"/>";
+    out << "<text x=\"" << num(lx + 24) << "\" y=\"" << num(ly) << "\" dy=\"4\">" << escapeText(s.name)
+        << "</text>\n";
+    ly += 17;
+  }
+  out << "</g>\n</svg>\n";
+  return out.str();
+}
+
+}  // namespace reports::svg

@@ -1,0 +1,59 @@
+// A small inline-SVG plot writer for the benchmark pages: scatter and line
+// plots on linear, log10 or log2 axes, with ticks, axis labels, point labels,
+// min-max whiskers and a legend. No script, no external resources: the
+// result is one <svg> element to put inside an HTML page.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace reports::svg {
+
+enum class Scale { Linear, Log10, Log2 };
+
+struct Axis {
+  std::string label;
+  Scale scale = Scale::Linear;
+  bool fromZero = true;  // linear axes start at 0 (when the data is non-negative)
+};
+
+struct Point {
+  double x = 0, y = 0;
+  std::optional<double> yLow, yHigh;  // a whisker (min and max over repetitions)
+  std::string label;                  // drawn beside the point ("" for none)
+  std::string id;                     // data-point attribute and tooltip
+  bool highlight = false;             // drawn with a ring, class "front"
+};
+
+struct Series {
+  std::string name;  // legend entry ("" for none)
+  std::string colour;
+  std::vector<Point> points;
+  bool line = true;      // connect the points in order
+  bool markers = true;
+  bool dashed = false;
+  bool steps = false;    // connect with horizontal-then-vertical steps
+  std::string cssClass;  // class of the series' <g>
+};
+
+struct Plot {
+  std::string title;
+  Axis x, y;
+  std::vector<Series> series;
+  int width = 760, height = 400;
+};
+
+// The <svg> element; points with non-finite coordinates, or non-positive
+// ones on a log axis, are left out. Text is escaped.
+std::string render(const Plot& plot);
+
+// Distinct colours, by index (cycling).
+const std::string& colour(std::size_t index);
+
+// Tick positions (in data units) for an axis over [low, high].
+std::vector<double> ticks(Scale scale, double low, double high);
+// "0.5", "12", "1.5k", "100k", "2M".
+std::string tickText(double value);
+
+}  // namespace reports::svg

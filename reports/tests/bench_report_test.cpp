@@ -1,0 +1,217 @@
+// The benchmark pages of the hand-written bench.json (bench_sample.h).
+#include "reports/bench_data.h"
+#include "reports/bench_report.h"
+#include "reports/tests/bench_sample.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace reports {
+namespace {
+
+namespace fs = std::filesystem;
+
+long long count(const std::string& text, const std::string& what) {
+  long long n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// data-point of every point drawn as on the Pareto front.
+std::set<std::string> frontPoints(const std::string& html) {
+  std::set<std::string> points;
+  const std::regex front("<circle class=\"pt front\" data-point=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), front); it != std::sregex_iterator(); ++it)
+    points.insert((*it)[1].str());
+  return points;
+}
+
+const BenchEntry& entry(const BenchSet& set, const std::string& name) {
+  for (const BenchEntry& e : set.entries)
+    if (e.name.full == name) return e;
+  throw std::runtime_error("no benchmark " + name);
+}
+
+TEST(BenchData, ParsesNames) {
+  const BenchName a = parseBenchName("frame/vulkan/lights64-1280x720/legacy-4+4/manual_time");
+  EXPECT_EQ(a.full, "frame/vulkan/lights64-1280x720/legacy-4+4");
+  EXPECT_EQ(a.kind, "frame");
+  EXPECT_EQ(a.backend, "vulkan");
+  EXPECT_EQ(a.scene, "lights64-1280x720");
+  EXPECT_EQ(a.mode, "legacy-4+4");
+  EXPECT_EQ(a.x, "");
+  const BenchName b = parseBenchName("frame/gl-egl/curve-resolution/all-lights/1280x720/repeats:5/real_time");
+  EXPECT_EQ(b.full, "frame/gl-egl/curve-resolution/all-lights/1280x720");
+  EXPECT_EQ(b.x, "1280x720");
+  EXPECT_EQ(curveX(b.x), 921600.0);
+  EXPECT_EQ(curveX("64"), 64.0);
+  EXPECT_FALSE(curveX("abc").has_value());
+  EXPECT_EQ(parseBenchName("BM_Old").kind, "BM_Old");
+}
+
+TEST(BenchData, MediansSpreadAndFits) {
+  const BenchSet set = readBenchFile(testing::sampleBench());
+  const BenchEntry& v = entry(set, "frame/vulkan/lights64-1280x720/all-lights");
+  EXPECT_EQ(v.section, "vulkan");
+  EXPECT_EQ(v.count, 5);
+  EXPECT_TRUE(v.medianFromAggregate);
+  EXPECT_DOUBLE_EQ(*v.medianMs, 10.0);
+  EXPECT_DOUBLE_EQ(*v.minMs, 9.8);
+  EXPECT_DOUBLE_EQ(*v.maxMs, 10.5);
+  EXPECT_DOUBLE_EQ(*v.stddevMs, 0.27);
+  EXPECT_DOUBLE_EQ(v.counters.at("device_ms"), 10.0);
+  // gl-egl: no aggregates, microseconds: the median is computed from the repetitions.
+  const BenchEntry& g = entry(set, "frame/gl-egl/lights64-1280x720/all-lights");
+  EXPECT_FALSE(g.medianFromAggregate);
+  EXPECT_EQ(g.count, 3);
+  EXPECT_DOUBLE_EQ(*g.medianMs, 20.0);
+  EXPECT_DOUBLE_EQ(*g.minMs, 19.5);
+  EXPECT_NEAR(*g.stddevMs, 0.763763, 1e-6);  // sample stddev of 20, 21, 19.5
+  EXPECT_FALSE(g.counters.count("device_ms"));
+  // Aggregates only: the count is the aggregate's "repetitions".
+  const BenchEntry& p = entry(set, "prepare/cpu/curve-lights/all-lights/1000");
+  EXPECT_EQ(p.count, 5);
+  EXPECT_DOUBLE_EQ(*p.medianMs, 0.02);
+  EXPECT_FALSE(p.minMs.has_value());
+  const BenchEntry& withMinMax = entry(set, "prepare/cpu/curve-objects/per-object/1000");  // min, max aggregates
+  EXPECT_DOUBLE_EQ(*withMinMax.medianMs, 5e-4);
+  EXPECT_DOUBLE_EQ(*withMinMax.minMs, 4.5e-4);
+  EXPECT_DOUBLE_EQ(*withMinMax.maxMs, 6e-4);
+  const BenchEntry& failed = entry(set, "pipeline/vulkan/attenuation.point-d-zero/all-lights");
+  EXPECT_EQ(failed.error, "compile <failed> & \"x\"");
+  ASSERT_EQ(set.fits.size(), 2u);
+  EXPECT_EQ(set.fits[0].family.full, "prepare/cpu/curve-lights/all-lights");
+  EXPECT_EQ(set.fits[0].bigO, "N");
+  EXPECT_DOUBLE_EQ(*set.fits[0].coefficientMs, 2e-5);
+  EXPECT_DOUBLE_EQ(*set.fits[0].rms, 0.031);
+  EXPECT_NEAR(*set.fits[0].at(1000), 0.02, 1e-12);
+  EXPECT_EQ(set.fits[1].bigO, "NlgN");
+  EXPECT_NEAR(*set.fits[1].at(1024), 0.15e-6 * 1024 * 10, 1e-12);
+}
+
+TEST(BenchReport, ParetoFront) {
+  // (time, error): (1, 5) fastest; (2, 2); (3, 2) is dominated by (2, 2);
+  // (4, 1) most accurate; (5, 5) dominated; two equal points both stay.
+  const std::vector<bool> front = paretoFront({{1, 5}, {2, 2}, {3, 2}, {4, 1}, {5, 5}, {2, 2}});
+  EXPECT_EQ(front, (std::vector<bool>{true, true, false, true, false, true}));
+}
+
+TEST(BenchReport, PageFiles) {
+  EXPECT_EQ(benchPageFile("gl-egl-softpipe"), "gl-egl-softpipe.html");
+  EXPECT_EQ(benchPageFile("a/b <c>"), "a_b__c_.html");
+  EXPECT_EQ(benchPageFile("index"), "backend-index.html");
+  EXPECT_EQ(benchBackends(testing::sampleBench()), (std::vector<std::string>{"vulkan", "gl-egl", "gl-osmesa"}));
+}
+
+class BenchPages : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("lightcts-bench-report-" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    writeBenchReport(testing::sampleBench(), dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(BenchPages, WritesEveryPage) {
+  std::set<std::string> files;
+  for (const auto& f : fs::directory_iterator(dir_)) files.insert(f.path().filename().string());
+  EXPECT_EQ(files, (std::set<std::string>{"index.html", "vulkan.html", "gl-egl.html", "gl-osmesa.html"}));
+}
+
+TEST_F(BenchPages, OneSvgPerPlot) {
+  EXPECT_EQ(count(readFile(dir_ / "index.html"), "<svg "), 7);
+  EXPECT_EQ(count(readFile(dir_ / "vulkan.html"), "<svg "), 4);
+  EXPECT_EQ(count(readFile(dir_ / "gl-egl.html"), "<svg "), 2);
+  EXPECT_EQ(count(readFile(dir_ / "gl-osmesa.html"), "<svg "), 0);
+  for (const char* page : {"index.html", "vulkan.html", "gl-egl.html", "gl-osmesa.html"}) {
+    const std::string html = readFile(dir_ / page);
+    EXPECT_EQ(count(html, "<svg "), count(html, "</svg>")) << page;
+    EXPECT_EQ(html.find("<script"), std::string::npos) << page;
+    EXPECT_EQ(html.find("<link"), std::string::npos) << page;
+    EXPECT_EQ(html.find(" src="), std::string::npos) << page << ": no external resources";
+  }
+}
+
+TEST_F(BenchPages, ParetoPointsAreTheHandDerivedOnes) {
+  const std::string index = readFile(dir_ / "index.html");
+  EXPECT_EQ(frontPoints(index),
+            (std::set<std::string>{"gl-egl/legacy-4+4", "vulkan/legacy-4+4", "vulkan/per-object",
+                                   "vulkan/all-lights", "gl-egl/all-lights"}));
+  const std::size_t scatter = index.find("<svg ");
+  const std::string firstPlot = index.substr(scatter, index.find("</svg>", scatter) - scatter);
+  EXPECT_NE(firstPlot.find("lights64-1280x720: speed against error"), std::string::npos);
+  EXPECT_EQ(count(firstPlot, "<circle class=\"pt"), 7) << "one point per (backend, mode)";
+  EXPECT_NE(index.find("data-point=\"vulkan/full-shader\""), std::string::npos);
+  EXPECT_NE(index.find("data-point=\"gl-egl/per-object\""), std::string::npos);
+  EXPECT_EQ(frontPoints(readFile(dir_ / "vulkan.html")),
+            (std::set<std::string>{"vulkan/legacy-4+4", "vulkan/per-object", "vulkan/all-lights"}));
+  EXPECT_EQ(frontPoints(readFile(dir_ / "gl-egl.html")),
+            (std::set<std::string>{"gl-egl/legacy-4+4", "gl-egl/per-object", "gl-egl/all-lights"}));
+  // The table under the plot: vulkan all-lights is 10 ms / 0.5 ms = 20 times its limit.
+  EXPECT_NE(index.find("<tr class=\"front\"><td>vulkan</td><td>all-lights</td><td>yes</td><td class=\"n\">10</td>"
+                       "<td class=\"n\">9.8</td><td class=\"n\">10.5</td><td class=\"n\">5</td><td class=\"n\">0.0001"
+                       "</td><td class=\"n\">0.002</td><td class=\"n\">60.5</td><td class=\"n\">20</td></tr>"),
+            std::string::npos);
+}
+
+TEST_F(BenchPages, MetadataTablesAndFits) {
+  const std::string index = readFile(dir_ / "index.html");
+  for (const char* text : {"v0.2-7-gdeadbee", "2026-12-01T16:00:00Z", "420.500 s", "lightcts bench --out out/bench",
+                           "38.4 GFLOP/s on 2 cores", "Mesa 22.3.6", "1.3.230", "NotSupported",
+                           "href=\"vulkan.html\"", "2e-05 ms \u00b7 N, RMS 3.1 %", "1.5e-07 ms \u00b7 NlgN, RMS 12 %",
+                           "prepare/cpu/lights64-1280x720/all-lights"})
+    EXPECT_NE(index.find(text), std::string::npos) << text;
+  const std::string vulkan = readFile(dir_ / "vulkan.html");
+  for (const char* text : {"<th>device ms</th>", "<th>wall ms</th>", "<th>\u00d7 limit</th>", "<th>pixels/s</th>",
+                           "<th>err_rmse</th>", "<th>err_max_abs</th>", "frame_readback (1)", "pipeline (1)",
+                           "frame/vulkan/curve-resolution/all-lights/1280x720", "context.library_build_type"})
+    EXPECT_NE(vulkan.find(text), std::string::npos) << text;
+  const std::string gl = readFile(dir_ / "gl-egl.html");
+  EXPECT_EQ(gl.find("<th>device ms</th>"), std::string::npos) << "no device times on gl-egl: no column";
+}
+
+TEST_F(BenchPages, EscapesText) {
+  const std::string index = readFile(dir_ / "index.html");
+  EXPECT_NE(index.find("libOSMesa.so.8 &lt;not found&gt; &amp; &quot;quoted&quot;"), std::string::npos);
+  EXPECT_NE(index.find("llvmpipe (LLVM 15.0.6, 256 bits) &lt;b&gt;"), std::string::npos);
+  EXPECT_NE(index.find("Test CPU &lt;8 cores&gt;"), std::string::npos);
+  EXPECT_EQ(index.find("<b>"), std::string::npos);
+  EXPECT_EQ(index.find("<not found>"), std::string::npos);
+  const std::string vulkan = readFile(dir_ / "vulkan.html");
+  EXPECT_NE(vulkan.find("error: compile &lt;failed&gt; &amp; &quot;x&quot;"), std::string::npos);
+  EXPECT_NE(vulkan.find("legacy-4+4"), std::string::npos);
+}
+
+TEST(BenchReport, RejectsOtherFormats) {
+  EXPECT_THROW(writeBenchReport(nlohmann::ordered_json::parse(R"({"format": "lightcts-results"})"),
+                                fs::temp_directory_path() / "lightcts-never-written"),
+               std::invalid_argument);
+  EXPECT_THROW(writeBenchReport(nlohmann::ordered_json::array(), fs::temp_directory_path() / "lightcts-never-written"),
+               std::invalid_argument);
+  EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "lightcts-never-written"));
+}
+
+TEST(BenchReport, EmptyBenchStillWritesPages) {
+  const std::string html = benchOverviewHtml(nlohmann::ordered_json::parse(R"({"format": "lightcts-bench"})"));
+  EXPECT_NE(html.find("No frame benchmark has error counters."), std::string::npos);
+  EXPECT_EQ(count(html, "<svg "), 0);
+}
+
+}  // namespace
+}  // namespace reports

@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# Opens every DIR/*.html (the benchmark pages, docs/bench-report.md) in
+# headless Chromium and checks that every inline <svg> plot renders: a
+# non-zero bounding box (getBBox) and layout box, and drawn elements (paths,
+# lines, circles, text) of non-zero extent; and that the pages have at least
+# one <svg> between them.
+#
+#   check_svgs_render.sh DIR
+#
+# The pages have no JavaScript, so each is checked as a copy in a temporary
+# folder with a small script added before </body> that, after the load
+# event, writes its findings into the page, which --dump-dom prints. DIR is
+# not written to.
+#
+# Exit: 0 every plot rendered; 1 a plot did not, there is none, or the check
+# could not run; 2 usage; 77 chromium is not installed (a skip).
+set -euo pipefail
+
+if [ $# -ne 1 ]; then
+  echo "usage: $0 DIR" >&2
+  exit 2
+fi
+dir=$(cd "$1" 2>/dev/null && pwd) || { echo "FAIL: no folder $1" >&2; exit 1; }
+shopt -s nullglob
+pages=("$dir"/*.html)
+[ ${#pages[@]} -gt 0 ] || { echo "FAIL: no .html files in $dir" >&2; exit 1; }
+
+chromium=""
+for candidate in chromium chromium-browser; do
+  if command -v "$candidate" >/dev/null; then chromium=$(command -v "$candidate"); break; fi
+done
+if [ -z "$chromium" ]; then
+  echo "NotSupported: chromium not installed (apt-get install chromium; scripts/setup.sh installs it)"
+  exit 77
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The markers are split in the script so that only its output matches them.
+checker='<script>
+window.addEventListener("load", function () {
+  var svgs = Array.prototype.slice.call(document.querySelectorAll("svg"));
+  var broken = [];
+  svgs.forEach(function (s, i) {
+    var why = [];
+    var box = s.getBBox(), rect = s.getBoundingClientRect();
+    if (!(box.width > 0 && box.height > 0)) why.push("empty bounding box " + box.width + "x" + box.height);
+    if (!(rect.width > 0 && rect.height > 0)) why.push("no layout box " + rect.width + "x" + rect.height);
+    var shapes = Array.prototype.slice.call(s.querySelectorAll("path, line, polyline, polygon, circle, ellipse, text"));
+    var drawn = shapes.filter(function (e) { var b = e.getBBox(); return b.width > 0 || b.height > 0; });
+    if (drawn.length === 0) why.push("nothing drawn (" + shapes.length + " shapes, all empty)");
+    if (why.length) broken.push("BROKEN SVG #" + i + " \"" + (s.getAttribute("aria-label") || "") + "\": " + why.join("; "));
+  });
+  var out = document.createElement("pre");
+  out.textContent = "LIGHTCTS-" + "SVGS total=" + svgs.length + " broken=" + broken.length + "\n" +
+    broken.map(function (b) { return b + "\n"; }).join("") + "LIGHTCTS-" + "SVGS-END";
+  document.body.appendChild(out);
+});
+</script>'
+
+started=$(date +%s%N)
+all_total=0
+all_broken=0
+failed=0
+for page in "${pages[@]}"; do
+  name=$(basename "$page")
+  grep -qi '</body>' "$page" || { echo "FAIL: $name has no </body>" >&2; failed=1; continue; }
+  CHECKER="$checker" awk '
+    !done_script && (at = index($0, "</body>")) {
+      $0 = substr($0, 1, at - 1) ENVIRON["CHECKER"] "\n" substr($0, at); done_script = 1 }
+    { print }' "$page" > "$work/check.html"
+  set +e
+  timeout 90 "$chromium" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
+    --no-default-browser-check --user-data-dir="$work/profile" --virtual-time-budget=5000 --dump-dom \
+    "file://$work/check.html" > "$work/dom.html" 2> "$work/chromium.log"
+  status=$?
+  set -e
+  result=$(sed -n '/LIGHTCTS-SVGS total=[0-9]/,/LIGHTCTS-SVGS-END/p' "$work/dom.html" | sed 's/<[^>]*>//g')
+  if [ -z "$result" ]; then
+    echo "FAIL: chromium (exit $status) did not report on the plots of $name" >&2
+    tail -20 "$work/chromium.log" >&2
+    failed=1
+    continue
+  fi
+  total=$(echo "$result" | sed -n 's/.*total=\([0-9]*\).*/\1/p' | head -1)
+  broken=$(echo "$result" | sed -n 's/.*broken=\([0-9]*\).*/\1/p' | head -1)
+  in_source=$( (grep -o '<svg[ >]' "$page" || true) | wc -l)
+  echo "$name: $total plots, $broken broken"
+  echo "$result" | grep '^BROKEN SVG' || true
+  if [ "$total" != "$in_source" ]; then
+    echo "FAIL: $name has $in_source <svg> tags but chromium saw $total" >&2
+    failed=1
+  fi
+  all_total=$((all_total + total))
+  all_broken=$((all_broken + broken))
+done
+elapsed_ms=$(( ($(date +%s%N) - started) / 1000000 ))
+echo "chromium: ${elapsed_ms} ms for ${#pages[@]} pages"
+if [ "$all_total" -eq 0 ]; then
+  echo "FAIL: no <svg> in the pages of $dir" >&2
+  exit 1
+fi
+if [ "$all_broken" -ne 0 ] || [ "$failed" -ne 0 ]; then
+  echo "FAIL: $all_broken of $all_total plots in $dir did not render" >&2
+  exit 1
+fi
+echo "PASS: all $all_total plots in ${#pages[@]} pages of $dir rendered"

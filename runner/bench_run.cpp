@@ -1,0 +1,190 @@
+#include "runner/bench_run.h"
+
+#include "imaging/text_file.h"
+#include "reports/bench_report.h"
+#include "runner/backend_combination.h"
+#include "runner/run_metadata.h"
+#include "runner/worker_process.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <regex>
+#include <sstream>
+
+namespace runner {
+namespace {
+
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct ProcessOutcome {
+  bool ok = false;
+  std::string how;  // "exit status 0", "killed by signal ...", "timed out"
+  int exitStatus = -1;
+  Json output;      // the Google Benchmark JSON it wrote, or null
+};
+
+// Google Benchmark writes a counter that is NaN or infinite as a bare
+// `nan` / `inf`, which is not JSON; bench.json says null instead.
+std::string withNonFiniteAsNull(const std::string& text) {
+  static const std::regex nonFinite(R"(:\s*-?(nan|NaN|inf|Inf|INF|NAN|infinity|Infinity)\b)");
+  return std::regex_replace(text, nonFinite, ": null");
+}
+
+// Runs `lightcts bench-worker ARGS --benchmark_out=FILE` and reads FILE.
+ProcessOutcome runBenchProcess(const BenchOptions& options, std::vector<std::string> args, const fs::path& jsonFile,
+                               const fs::path& logFile) {
+  fs::remove(jsonFile);
+  std::vector<std::string> argv = {options.workerExecutable, "bench-worker"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.push_back("--benchmark_out=" + jsonFile.string());
+  argv.push_back("--benchmark_out_format=json");
+  WorkerProcess worker(argv, logFile.string());
+  ProcessOutcome outcome;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(options.timeoutSeconds);
+  std::ofstream console(logFile.string() + ".out");
+  std::string line;
+  for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto status = worker.readLine(std::max(left, std::chrono::milliseconds(1)), line);
+    if (status == WorkerProcess::ReadStatus::Line) {
+      console << line << '\n';  // Google Benchmark's console table, kept for people
+      continue;
+    }
+    if (status == WorkerProcess::ReadStatus::TimedOut) {
+      outcome.how = "timed out after " + std::to_string(int(options.timeoutSeconds)) + " s (" + worker.finish(true) + ")";
+      return outcome;
+    }
+    outcome.how = worker.finish(false);
+    break;
+  }
+  outcome.exitStatus = worker.exitStatus();
+  outcome.ok = outcome.exitStatus == 0;
+  std::ifstream in(jsonFile);
+  if (in) {
+    try {
+      std::stringstream text;
+      text << in.rdbuf();
+      outcome.output = Json::parse(withNonFiniteAsNull(text.str()));
+    } catch (const Json::parse_error& e) {
+      outcome.ok = false;
+      outcome.how += "; its JSON does not parse: " + std::string(e.what());
+    }
+  } else {
+    outcome.ok = false;
+  }
+  return outcome;
+}
+
+// The device lines a frame-benchmark process adds to Google Benchmark's
+// context ("<suffix>.device", ".driver", ".api").
+Json deviceFromContext(const Json& context, const std::string& suffix) {
+  Json device = Json::object();
+  for (const auto& [key, field] : {std::pair{".device", "name"}, std::pair{".driver", "driver"},
+                                   std::pair{".driver_version", "driver_version"}, std::pair{".api", "api_version"}})
+    if (context.contains(suffix + key)) device[field] = context[suffix + key];
+  return device;
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+  const auto started = Clock::now();
+  const std::string startedUtc = utcTimestamp();
+  const std::vector<BackendCombination> combinations = selectCombinations(options.backends);
+  const fs::path outDir(options.outDir);
+  const fs::path rawDir = outDir / "raw";
+  fs::create_directories(rawDir);
+  const std::vector<std::string> quick = options.quick ? std::vector<std::string>{"--quick"} : std::vector<std::string>{};
+
+  // The calibration first, on a quiet machine: every later limit depends on it.
+  out << "bench: calibrating the peak rate" << std::endl;
+  const ProcessOutcome peakRun = runBenchProcess(options, {"peak"}, rawDir / "peak.json", rawDir / "peak.log");
+  Json peak = nullptr;
+  if (peakRun.ok && peakRun.output.contains("peak")) peak = peakRun.output["peak"];
+  std::string peakArg;
+  if (!peak.is_null()) {
+    std::ostringstream text;
+    text << std::setprecision(17) << peak["gflops"].get<double>();
+    peakArg = "--peak_gflops=" + text.str();
+    out << "bench: peak " << peak["gflops"].get<double>() << " GFLOP/s" << std::endl;
+  } else {
+    err << "lightcts: bench: the peak-rate calibration failed (" << peakRun.how << "); no physical limit\n";
+  }
+
+  out << "bench: CPU preparation" << std::endl;
+  std::vector<std::string> prepareArgs = {"prepare"};
+  prepareArgs.insert(prepareArgs.end(), quick.begin(), quick.end());
+  const ProcessOutcome prepareRun =
+      runBenchProcess(options, prepareArgs, rawDir / "prepare.json", rawDir / "prepare.log");
+  Json prepare = prepareRun.output.is_object() ? Json{{"context", prepareRun.output.value("context", Json::object())},
+                                                      {"benchmarks", prepareRun.output.value("benchmarks", Json::array())}}
+                                                : Json(nullptr);
+  bool failed = !prepareRun.ok;
+  if (!prepareRun.ok) err << "lightcts: bench: the CPU preparation benchmarks failed (" << prepareRun.how << ")\n";
+
+  Json backends = Json::array();
+  bool anyRan = false;
+  for (const BackendCombination& c : combinations) {
+    out << "bench: " << c.suffix << std::endl;
+    const auto start = Clock::now();
+    std::vector<std::string> args = {"frame", "--backend=" + c.backend, "--scenes=" + options.scenesDir};
+    if (!c.driver.empty()) args.push_back("--driver=" + c.driver);
+    if (!peakArg.empty()) args.push_back(peakArg);
+    args.insert(args.end(), quick.begin(), quick.end());
+    const ProcessOutcome run = runBenchProcess(options, args, rawDir / (c.suffix + ".json"), rawDir / (c.suffix + ".log"));
+    const Json benchmarks = run.output.is_object() ? run.output.value("benchmarks", Json::array()) : Json::array();
+    const Json context = run.output.is_object() ? run.output.value("context", Json::object()) : Json::object();
+    std::string status = "ran", message;
+    // Exit 3 (or nothing measured): the backend or driver is not here.
+    if (run.exitStatus == 3 || (run.ok && benchmarks.empty())) {
+      status = "NotSupported";
+      std::ifstream log(rawDir / (c.suffix + ".log"));
+      std::getline(log, message);
+    } else if (!run.ok) {
+      status = "error";
+      message = "the benchmark process ended with " + run.how + "; see raw/" + c.suffix + ".log";
+      failed = true;
+    }
+    anyRan = anyRan || status == "ran";
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    out << "bench: " << c.suffix << ": " << status << (message.empty() ? "" : " (" + message + ")") << ", "
+        << benchmarks.size() << " entries, " << std::fixed << std::setprecision(1) << seconds << " s"
+        << std::defaultfloat << std::endl;
+    backends.push_back({{"backend", c.suffix},
+                        {"status", status},
+                        {"message", message},
+                        {"device", deviceFromContext(context, c.suffix)},
+                        {"wall_s", seconds},
+                        {"context", context},
+                        {"benchmarks", benchmarks}});
+  }
+
+  const Json bench = {{"format", "lightcts-bench"},
+                      {"version", 1},
+                      {"lightcts_revision", revision()},
+                      {"started_utc", startedUtc},
+                      {"duration_s", std::chrono::duration<double>(Clock::now() - started).count()},
+                      {"command", options.commandLine},
+                      {"quick", options.quick},  // a smoke test, not a measurement
+                      {"machine", machineJson()},
+                      {"peak", peak},
+                      {"backends", backends},
+                      {"prepare", prepare}};
+  reports::writeBenchReport(bench, outDir);
+  imaging::writeFileAtomically(outDir / "bench.json", bench.dump(1) + "\n");
+  out << "bench: " << (outDir / "bench.json").string() << ", pages in " << (outDir / "index.html").string() << std::endl;
+  if (!anyRan && !failed) {
+    err << "lightcts: bench: no backend asked for is present here (NotSupported)\n";
+    return 3;
+  }
+  return failed ? 4 : 0;
+}
+
+}  // namespace runner

@@ -1,0 +1,101 @@
+#include "suite/bench/bench_scenes.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace bench {
+
+using namespace lighting;
+
+std::string_view modeName(FrameMode mode) {
+  switch (mode) {
+    case FrameMode::AllLights: return "all-lights";
+    case FrameMode::PerObject: return "per-object";
+    case FrameMode::Legacy4x4: return "legacy-4+4";
+  }
+  return "?";
+}
+
+namespace {
+
+std::string gridName(const char* prefix, int i, int k) {
+  std::string name(prefix);  // appended, not `prefix + ...`: GCC 12 warns falsely (-Wrestrict) on that
+  name += std::to_string(i);
+  name += '_';
+  name += std::to_string(k);
+  return name;
+}
+
+}  // namespace
+
+void lightGridFor(int count, int& columns, int& rows) {
+  if (count < 1 || (count & (count - 1)) != 0) throw std::invalid_argument("light count must be a power of two");
+  int log2 = 0;
+  while ((1 << log2) < count) ++log2;
+  columns = 1 << ((log2 + 1) / 2);
+  rows = count / columns;
+}
+
+// Seen from straight above (orthographic, exactly the field), so every pixel
+// is covered. On the 8x8 field of 1280x720 each tile is 1.6 x 0.9 with one
+// light of range 0.85 over its centre: a light touches the bounds of its own
+// tile, of the tiles next to it (not the diagonal ones) and of the boxes at
+// its tile's corners, so each tile gets 3-5 lights and each box 4: per-object
+// lists (at most 8) matter against all 64 lights per pixel.
+Scene fieldScene(const FieldSpec& spec, const std::string& name) {
+  constexpr double kFieldZ = 7.2;  // the view's height in world units
+  const double fieldX = kFieldZ * spec.width / spec.height;
+  Scene s;
+  s.name = name;
+  s.sourcePath = "render_bench synthetic " + name;
+  s.image = {spec.width, spec.height};
+  s.camera = Camera{{0, 10, 0}, {0, 0, 0}, {0, 0, -1}, Projection::Orthographic, 60, kFieldZ, 0.1, 100};
+  s.pipeline.lightsPerObject = spec.mode == FrameMode::PerObject;
+  if (spec.mode == FrameMode::Legacy4x4) {
+    s.pipeline.profile = Profile::Legacy;
+    s.pipeline.lightsPerObject = true;  // always on in the legacy profile
+  }
+  const double x0 = -fieldX / 2, z0 = -kFieldZ / 2;
+  const double tileX = fieldX / spec.tileColumns, tileZ = kFieldZ / spec.tileRows;
+  for (int i = 0; i < spec.tileColumns; ++i) {
+    for (int k = 0; k < spec.tileRows; ++k) {
+      Object tile;
+      tile.name = gridName("tile", i, k);
+      tile.mesh.type = MeshType::Plane;
+      tile.mesh.planeSizeX = tileX;
+      tile.mesh.planeSizeZ = tileZ;
+      tile.transform.translate = {x0 + (i + 0.5) * tileX, 0, z0 + (k + 0.5) * tileZ};
+      tile.albedo = {0.8, 0.8, 0.8};
+      s.objects.push_back(tile);
+    }
+  }
+  if (spec.boxes) {
+    for (int i = 1; i < spec.tileColumns; i += 2) {
+      for (int k = 1; k < spec.tileRows; k += 2) {
+        Object box;
+        box.name = gridName("box", i, k);
+        box.mesh.type = MeshType::Box;
+        box.mesh.boxSize = {0.5, 0.5, 0.5};
+        box.transform.translate = {x0 + i * tileX, 0.25, z0 + k * tileZ};
+        box.albedo = {0.9, 0.6, 0.3};
+        s.objects.push_back(box);
+      }
+    }
+  }
+  const double cellX = fieldX / spec.lightColumns, cellZ = kFieldZ / spec.lightRows;
+  const double range = 0.85 * std::sqrt(cellX * cellZ / (1.6 * 0.9));
+  for (int i = 0; i < spec.lightColumns; ++i) {
+    for (int k = 0; k < spec.lightRows; ++k) {
+      Light l;
+      l.name = gridName("p", i, k);
+      l.type = LightType::Point;
+      l.position = {x0 + (i + 0.5) * cellX, 0.4, z0 + (k + 0.5) * cellZ};
+      l.range = range;
+      l.color = {0.5 + 0.5 * (i % 2), 0.5 + 0.5 * (k % 2), 1.0};
+      s.lights.push_back(l);
+    }
+  }
+  return s;
+}
+
+}  // namespace bench

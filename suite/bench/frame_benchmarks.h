@@ -1,0 +1,24 @@
+// The frame benchmarks of one backend combination (docs/bench-format.md):
+// `frame`, `frame_readback` and `pipeline` on the synthetic 1280x720
+// 64-light field in every mode, the cost curves, and (with --suite_scenes)
+// every suite scene. `render_bench` is a thin main around it;
+// `lightcts bench-worker frame` calls it too.
+#pragma once
+
+namespace bench {
+
+// Our flags, taken out before Google Benchmark sees the rest:
+//   --backend=vulkan|gl-egl|gl-osmesa   (default vulkan)
+//   --driver=llvmpipe|softpipe          (GL only; softpipe runs a scaled-down set)
+//   --peak_gflops=X                     adds the limit_ms and flops_per_pixel_light counters
+//   --quick                             fewer points and repetitions (the ctest smoke test)
+//   --scenes=DIR                        suite scenes (default: the source tree's suite/scenes)
+//   --suite_scenes                      also time every suite scene (frame kind)
+// Every other argument goes to Google Benchmark (--benchmark_out=FILE,
+// --benchmark_out_format=json, --benchmark_filter=...). One combination
+// per process: Mesa loads one driver per process.
+// Returns 0, 2 (bad usage), 3 (the backend or driver is not here: the first
+// line on stderr says why; no benchmark ran) or 4 (it failed to start).
+int runFrameBenchmarks(int argc, char** argv);
+
+}  // namespace bench

@@ -1,0 +1,57 @@
+# bench.frame-smoke: render_bench --backend=vulkan --quick on the 64-light
+# field's all-lights frame (its error counters need the ideal reference, the
+# longest part) and one curve point; it must exit
+# 0 and its JSON must carry the counters of docs/bench-format.md.
+# -DRENDER_BENCH=<render_bench> -DOUT=<json file>
+file(REMOVE "${OUT}")
+execute_process(
+  COMMAND "${RENDER_BENCH}" --backend=vulkan --quick --peak_gflops=10 --benchmark_min_time=0.01
+          "--benchmark_filter=^frame/vulkan/(lights64-1280x720/all-lights|curve-lights/all-lights/64)(/|$)"
+          "--benchmark_out=${OUT}" --benchmark_out_format=json
+  RESULT_VARIABLE status)
+if(status EQUAL 3)
+  # ctest's SKIP_REGULAR_EXPRESSION turns this into a skip.
+  message(FATAL_ERROR "LIGHTCTS_SKIP: no Vulkan device here")
+endif()
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "render_bench exited with ${status}")
+endif()
+file(READ "${OUT}" json)
+string(JSON count LENGTH "${json}" benchmarks)
+if(count LESS 2)
+  message(FATAL_ERROR "expected at least 2 benchmark entries, got ${count}")
+endif()
+set(seen "")
+math(EXPR last "${count} - 1")
+foreach(i RANGE ${last})
+  string(JSON name GET "${json}" benchmarks ${i} name)
+  string(JSON runType GET "${json}" benchmarks ${i} run_type)
+  string(JSON error ERROR_VARIABLE noError GET "${json}" benchmarks ${i} error_message)
+  if(noError STREQUAL "NOTFOUND")
+    message(FATAL_ERROR "${name}: ${error}")
+  endif()
+  if(NOT runType STREQUAL "iteration")
+    continue()
+  endif()
+  set(required wall_ms pixels lights lights_per_pixel pixels_per_s pixel_light_evals_per_s limit_ms flops_per_pixel_light)
+  if(name MATCHES "^frame/vulkan/lights64-1280x720/")
+    list(APPEND required err_rmse err_max_abs err_psnr_db err_perceptual_fail)
+  endif()
+  foreach(counter IN LISTS required)
+    string(JSON value ERROR_VARIABLE missing GET "${json}" benchmarks ${i} ${counter})
+    if(NOT missing STREQUAL "NOTFOUND")
+      message(FATAL_ERROR "${name}: no counter ${counter}")
+    endif()
+  endforeach()
+  string(JSON lights GET "${json}" benchmarks ${i} lights)
+  if(NOT lights EQUAL 64)
+    message(FATAL_ERROR "${name}: ${lights} lights kept, not 64")
+  endif()
+  list(APPEND seen "${name}")
+endforeach()
+list(REMOVE_DUPLICATES seen)
+list(LENGTH seen distinct)
+if(NOT distinct EQUAL 2)
+  message(FATAL_ERROR "expected 2 benchmarks, ran: ${seen}")
+endif()
+message("ok: ${seen}")

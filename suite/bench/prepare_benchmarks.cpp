@@ -1,0 +1,228 @@
+// The CPU preparation benchmarks (docs/bench-format.md, kind `prepare`):
+//
+//   prepare/cpu/curve-lights/all-lights/<n>    prepareFrame + packing, n lights (10 .. 100000)
+//   prepare/cpu/curve-lights/per-object/<n>    the same with per-object lists (SPEC 5.2)
+//   prepare/cpu/curve-objects/per-object/<n>   64 lights, n objects (10 .. 10000)
+//   prepare/cpu/curve-lights/shadow-mask/<n>   assignShadowMaskChannels, n mixed shadowed lights
+//   prepare/cpu/lights64-1280x720/<mode>       render_bench's synthetic scene
+//
+// "Preparation" is what a backend does on the CPU for every frame before it
+// records commands: lighting::prepareFrame (camera, visible set, order and
+// budgets of SPEC 5.1, per-object lists of 5.2, shader features) and the
+// std140 packing of lighting/gpu_packing (the frame block and one object
+// block per object). The shadow-mask assignment (5.3) runs once per scene at
+// bake time (lighting::prepareScene) and is timed on its own. Each curve
+// family carries Google Benchmark's complexity fit (`<family>_BigO`,
+// `<family>_RMS`), so the JSON says whether the cost is near-linear.
+#include "suite/bench/prepare_benchmarks.h"
+
+#include "lighting/frame.h"
+#include "lighting/gpu_packing.h"
+#include "lighting/shadow_mask_channels.h"
+#include "suite/bench/prepare_scenes.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <unistd.h>
+
+namespace bench {
+namespace {
+
+using namespace lighting;
+
+constexpr int kRepetitions = 5;
+constexpr double kMinTimeSeconds = 0.1;       // per repetition
+constexpr double kQuickMinTimeSeconds = 0.01;
+
+struct Settings {
+  bool quick = false;
+  // Google Benchmark flags, placed before the caller's (the later wins).
+  std::vector<std::string> defaultFlags() const {
+    if (quick) return {"--benchmark_min_time=" + std::to_string(kQuickMinTimeSeconds), "--benchmark_repetitions=1"};
+    return {"--benchmark_min_time=" + std::to_string(kMinTimeSeconds),
+            "--benchmark_repetitions=" + std::to_string(kRepetitions), "--benchmark_display_aggregates_only=true"};
+  }
+  std::vector<int> lightCounts() const {
+    return quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000, 100000};
+  }
+  std::vector<int> objectCounts() const {
+    return quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000};
+  }
+};
+
+// Scenes are built and baked (prepareScene) once per process, outside the
+// timing, on the first call of the benchmark that needs them.
+std::shared_ptr<const PreparedScene> preparedScene(const std::string& key, const std::function<Scene()>& make) {
+  static std::map<std::string, std::shared_ptr<const PreparedScene>> cache;
+  auto [it, inserted] = cache.try_emplace(key);
+  if (inserted) it->second = prepareScene(make());
+  return it->second;
+}
+
+// One frame's CPU work: selection, lists, features, then the packed blocks.
+void prepareAndPack(const std::shared_ptr<const PreparedScene>& prepared) {
+  Frame frame = prepareFrame(prepared, 0);
+  GpuFrameBlock frameBlock = packFrameBlock(frame);
+  benchmark::DoNotOptimize(frameBlock);
+  const int objects = int(frame.scene().objects.size());
+  for (int o = 0; o < objects; ++o) {
+    GpuObjectBlock objectBlock = packObjectBlock(frame, o);
+    benchmark::DoNotOptimize(objectBlock);
+  }
+  benchmark::ClobberMemory();
+}
+
+// Times prepareAndPack; `itemCount` is what the rate counts (lights or
+// objects), `itemName` the counter's name.
+void timeFrame(benchmark::State& state, const std::shared_ptr<const PreparedScene>& prepared, double itemCount,
+               const char* rateName) {
+  for (auto _ : state) prepareAndPack(prepared);
+  const Frame frame = prepareFrame(prepared, 0);
+  state.SetComplexityN(benchmark::IterationCount(itemCount));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(itemCount));
+  state.counters["lights"] = double(frame.scene().lights.size());
+  state.counters["objects"] = double(frame.scene().objects.size());
+  state.counters["visible_lights"] = double(frame.selection.visible.size());
+  state.counters["kept_lights"] =
+      double(frame.selection.packed.directional.size() + frame.selection.packed.other.size());
+  state.counters[rateName] = benchmark::Counter(itemCount, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void curveLights(benchmark::State& state, bool perObject) {
+  const int n = int(state.range(0));
+  const auto prepared = preparedScene("curve-lights/" + std::to_string(n) + (perObject ? "/per-object" : "/all"),
+                                      [&] { return curveLightsScene(n, perObject); });
+  timeFrame(state, prepared, n, "lights_per_s");
+}
+
+void curveObjects(benchmark::State& state) {
+  const int n = int(state.range(0));
+  const auto prepared = preparedScene("curve-objects/" + std::to_string(n), [&] { return curveObjectsScene(n); });
+  timeFrame(state, prepared, n, "objects_per_s");
+}
+
+void lights64(benchmark::State& state, bool perObject) {
+  const auto prepared = preparedScene(perObject ? "lights64/per-object" : "lights64/all",
+                                      [&] { return sixtyFourLightsScene(perObject); });
+  timeFrame(state, prepared, double(prepared->scene.lights.size()), "lights_per_s");
+}
+
+void shadowMask(benchmark::State& state) {
+  const int n = int(state.range(0));
+  // Only the Scene is needed; the cache holds it inside a PreparedScene.
+  const auto prepared = preparedScene("shadow-mask/" + std::to_string(n), [&] { return shadowMaskScene(n); });
+  const Scene& scene = prepared->scene;
+  for (auto _ : state) {
+    ShadowMaskAssignment assignment = assignShadowMaskChannels(scene);
+    benchmark::DoNotOptimize(assignment);
+  }
+  int holders = 0, demoted = 0;
+  for (const ShadowMaskEntry& e : prepared->shadowMask.entries) (e.demoted ? demoted : holders) += 1;
+  state.SetComplexityN(n);
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * n);
+  state.counters["lights"] = n;
+  state.counters["channel_holders"] = holders;
+  state.counters["demoted"] = demoted;
+  state.counters["lights_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+// Repetitions and the minimum time come from flags (runPrepareBenchmarks puts
+// the defaults in front of the caller's arguments): set per benchmark, Google
+// Benchmark would append them to every name ("/min_time:0.100/repeats:5").
+benchmark::internal::Benchmark* common(benchmark::internal::Benchmark* b) {
+  return b->Unit(benchmark::kMicrosecond);
+}
+
+benchmark::internal::Benchmark* curve(benchmark::internal::Benchmark* b, const std::vector<int>& points) {
+  for (int x : points) b->Arg(x);
+  return common(b)->Complexity(benchmark::oAuto);
+}
+
+// The cv aggregate of a counter that is the same every repetition and 0
+// (`demoted` where nothing is demoted) is 0/0; JSON has no NaN, and nothing
+// varied: 0.
+template <class Base>
+class FiniteCounters : public Base {
+ public:
+  using Base::Base;
+  void ReportRuns(const std::vector<benchmark::BenchmarkReporter::Run>& runs) override {
+    std::vector<benchmark::BenchmarkReporter::Run> finite = runs;
+    for (auto& run : finite)
+      for (auto& [name, counter] : run.counters)
+        if (!std::isfinite(counter.value)) counter.value = 0;
+    Base::ReportRuns(finite);
+  }
+};
+
+void registerAll(const Settings& settings) {
+  for (const bool perObject : {false, true}) {
+    const std::string mode = perObject ? "per-object" : "all-lights";
+    curve(benchmark::RegisterBenchmark(("prepare/cpu/curve-lights/" + mode).c_str(),
+                                       [perObject](benchmark::State& s) { curveLights(s, perObject); }),
+          settings.lightCounts());
+  }
+  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-objects/per-object", curveObjects), settings.objectCounts());
+  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-lights/shadow-mask", shadowMask), settings.lightCounts());
+  for (const bool perObject : {false, true}) {
+    const std::string mode = perObject ? "per-object" : "all-lights";
+    common(benchmark::RegisterBenchmark(("prepare/cpu/lights64-1280x720/" + mode).c_str(),
+                                        [perObject](benchmark::State& s) { lights64(s, perObject); }));
+  }
+}
+
+}  // namespace
+
+int runPrepareBenchmarks(int argc, char** argv) {
+  Settings settings;
+  std::vector<std::string_view> given;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string_view(argv[i]) == "--quick") settings.quick = true;
+    else given.push_back(argv[i]);
+  }
+  std::vector<std::string> defaults = settings.defaultFlags();
+  std::vector<char*> args = {argv[0]};
+  for (std::string& d : defaults) args.push_back(d.data());
+  for (std::string_view g : given) args.push_back(const_cast<char*>(g.data()));
+
+  // The reporters (FiniteCounters): the console's unless --benchmark_format
+  // asks for another; the file's when --benchmark_out writes JSON (the
+  // default format). CSV keeps Google Benchmark's own.
+  std::string displayFormat = "console", outFormat = "json";
+  bool outFile = false;
+  for (std::string_view a : given) {
+    if (a.starts_with("--benchmark_format=")) displayFormat = std::string(a.substr(19));
+    else if (a.starts_with("--benchmark_out_format=")) outFormat = std::string(a.substr(23));
+    else if (a.starts_with("--benchmark_out=")) outFile = a.size() > 16;
+  }
+  std::unique_ptr<benchmark::BenchmarkReporter> display, file;
+  if (displayFormat == "console")
+    display = std::make_unique<FiniteCounters<benchmark::ConsoleReporter>>(
+        ::isatty(STDOUT_FILENO) ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular);
+  else if (displayFormat == "json")
+    display = std::make_unique<FiniteCounters<benchmark::JSONReporter>>();
+  if (outFile && outFormat == "json") file = std::make_unique<FiniteCounters<benchmark::JSONReporter>>();
+
+  int count = int(args.size());
+  args.push_back(nullptr);
+  static bool registered = false;
+  if (!registered) {
+    registerAll(settings);
+    registered = true;
+  }
+  benchmark::Initialize(&count, args.data());
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
+  benchmark::AddCustomContext("prepare_bench.set", settings.quick ? "quick" : "full");
+  benchmark::RunSpecifiedBenchmarks(display.get(), file.get());
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace bench
