@@ -1,5 +1,7 @@
 #include "suite/bench/prepare_scenes.h"
 
+#include "suite/bench/bench_scenes.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -138,39 +140,10 @@ Scene shadowMaskScene(int lights) {
 // As render_bench's sixtyFourLightsOverAField (the same geometry, so the CPU
 // and the draw benchmarks of `lights64-1280x720` share a scene).
 Scene sixtyFourLightsScene(bool perObject) {
-  constexpr int kTiles = 8;
-  constexpr double kTileX = 1.6, kTileZ = 0.9;
-  Scene s;
-  s.name = perObject ? "lights64-1280x720-per-object" : "lights64-1280x720-all";
-  s.sourcePath = "prepare_bench synthetic " + s.name;
-  s.image = {1280, 720};
-  s.camera = Camera{{0, 10, 0}, {0, 0, 0}, {0, 0, -1}, Projection::Orthographic, 60, kTiles * kTileZ, 0.1, 100};
-  s.pipeline.lightsPerObject = perObject;
-  const double x0 = -kTiles * kTileX / 2, z0 = -kTiles * kTileZ / 2;
-  for (int i = 0; i < kTiles; ++i) {
-    for (int k = 0; k < kTiles; ++k) {
-      const double x = x0 + (i + 0.5) * kTileX, z = z0 + (k + 0.5) * kTileZ;
-      Object tile;
-      tile.name = numbered("tile", i * kTiles + k);
-      tile.mesh.type = MeshType::Plane;
-      tile.mesh.planeSizeX = kTileX;
-      tile.mesh.planeSizeZ = kTileZ;
-      tile.transform.translate = {x, 0, z};
-      tile.albedo = {0.8, 0.8, 0.8};
-      s.objects.push_back(tile);
-      Light l;
-      l.name = numbered("p", i * kTiles + k);
-      l.type = LightType::Point;
-      l.position = {x, 0.4, z};
-      l.range = 0.85;
-      l.color = {0.5 + 0.5 * (i % 2), 0.5 + 0.5 * (k % 2), 1.0};
-      s.lights.push_back(l);
-    }
-  }
-  for (int i = 1; i < kTiles; i += 2)
-    for (int k = 1; k < kTiles; k += 2)
-      s.objects.push_back(box(numbered("box", i * kTiles + k), {x0 + i * kTileX, 0.25, z0 + k * kTileZ}, 0.5));
-  return s;
+  // The frame benchmarks' field (bench_scenes.h), so CPU and GPU time the same scene.
+  FieldSpec spec;
+  spec.mode = perObject ? FrameMode::PerObject : FrameMode::AllLights;
+  return fieldScene(spec, perObject ? "lights64-1280x720-per-object" : "lights64-1280x720-all");
 }
 
 }  // namespace bench

@@ -26,8 +26,8 @@ lighting::Scene curveObjectsScene(int objects);
 // (SPEC 5.3).
 lighting::Scene shadowMaskScene(int lights);
 
-// `lights64-1280x720`: the synthetic scene of render_bench, 64 point lights
-// over an 8 x 8 field of tiles and 16 boxes, 1280 x 720.
+// `lights64-1280x720`: the frame benchmarks' field (bench_scenes.h), 64 point
+// lights over an 8 x 8 field of tiles and 16 boxes, 1280 x 720.
 lighting::Scene sixtyFourLightsScene(bool perObject);
 
 }  // namespace bench
