@@ -41,6 +41,7 @@ std::string withNonFiniteAsNull(const std::string& text) {
 ProcessOutcome runBenchProcess(const BenchOptions& options, std::vector<std::string> args, const fs::path& jsonFile,
                                const fs::path& logFile) {
   fs::remove(jsonFile);
+  fs::remove(logFile);  // appended to by the process; an earlier run's lines are not this run's
   std::vector<std::string> argv = {options.workerExecutable, "bench-worker"};
   argv.insert(argv.end(), args.begin(), args.end());
   argv.push_back("--benchmark_out=" + jsonFile.string());
@@ -98,6 +99,10 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   const auto started = Clock::now();
   const std::string startedUtc = utcTimestamp();
   const std::vector<BackendCombination> combinations = selectCombinations(options.backends);
+  if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
+  std::error_code ec;
+  if (!fs::is_directory(options.scenesDir, ec))
+    throw std::invalid_argument("--scenes " + options.scenesDir + " is not a folder");
   const fs::path outDir(options.outDir);
   const fs::path rawDir = outDir / "raw";
   fs::create_directories(rawDir);

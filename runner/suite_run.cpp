@@ -94,6 +94,7 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
   const fs::path planFile = logsDir / (suffix + ".plan.json");
   imaging::writeFileAtomically(planFile, planToJson(plan).dump(1) + "\n");
   const fs::path logFile = logsDir / (suffix + ".log");
+  fs::remove(logFile);  // the workers append; an earlier run's lines are not this run's
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeoutSeconds * 1000));
 
   std::size_t next = 0;
@@ -103,8 +104,22 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
                          logFile.string());
     std::string line;
     bool stop = false;
+    bool gotResult = false;  // this worker reported at least one test
+    bool backendUp = false;  // this worker said "device": its backend was created
     for (;;) {
       const auto status = worker.readLine(timeout, line);
+      // A worker that dies or hangs before its backend is up would do the
+      // same for every task: the backend is an error, and the run moves on.
+      if (status != WorkerProcess::ReadStatus::Line && !backendUp) {
+        const bool hung = status == WorkerProcess::ReadStatus::TimedOut;
+        const std::string how = worker.finish(hung);
+        outcome.status = "error";
+        outcome.message = std::string(hung ? "the backend did not start within the timeout" : "the worker ended") +
+                          " before its backend was up (" + how + "); its last output:\n" + lastLines(logFile, 8);
+        for (; next < plan.tasks.size(); ++next)
+          outcome.results.push_back(abnormalResult(plan.tasks[next], hung ? "Timeout" : "Crash", outcome.message));
+        break;
+      }
       if (status == WorkerProcess::ReadStatus::TimedOut) {
         const std::string how = worker.finish(true);
         const WorkerTask& task = plan.tasks[next];
@@ -118,7 +133,7 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
         const std::string how = worker.finish(false);
         // Status 4 after a test's result: the worker reported a driver error
         // and quit, so that a new one starts on a fresh device. No test is lost.
-        if (worker.exitStatus() == 4) break;
+        if (worker.exitStatus() == 4 && gotResult) break;
         if (next < plan.tasks.size()) {
           const WorkerTask& task = plan.tasks[next];
           outcome.results.push_back(abnormalResult(
@@ -138,10 +153,13 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
       const std::string kind = event.value("kind", "");
       if (kind == "device") {
         outcome.device = event["device"];
+        backendUp = true;
       } else if (kind == "backend_unavailable" || kind == "backend_error") {
-        outcome.status = kind == "backend_unavailable" ? "NotSupported" : "error";
+        // A backend that ran before and is gone now is an error, not a skip.
+        const bool skip = kind == "backend_unavailable" && outcome.device.is_null();
+        outcome.status = skip ? "NotSupported" : "error";
         outcome.message = event.value("message", "");
-        const std::string verdict = kind == "backend_unavailable" ? "NotSupported" : "Crash";
+        const std::string verdict = skip ? "NotSupported" : "Crash";
         for (; next < plan.tasks.size(); ++next)
           outcome.results.push_back(abnormalResult(plan.tasks[next], verdict, outcome.message));
         stop = true;
@@ -151,6 +169,7 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
         event.erase("index");
         outcome.results.push_back(std::move(event));
         ++next;
+        gotResult = true;
       }
     }
     if (stop) break;
@@ -178,16 +197,19 @@ Json testRecord(const CatalogueEntry& scene, const std::string& suffix, Json res
   return record;
 }
 
-// A mutant is killed on a backend when at least one scene fails with it.
+// A mutant is killed on a backend when at least one scene fails with it that
+// passes without it (`cleanVerdicts`: the model's raw verdict per test; with
+// --mutants-only it is empty and every failing scene counts).
 Json mutantRecord(const std::string& mutant, const std::string& suffix, const std::string& backendStatus,
-                  const std::vector<Json>& results) {
+                  const std::vector<Json>& results, const std::map<std::string, std::string>& cleanVerdicts) {
   Json killedBy = Json::array();
   Json evidence = nullptr;
   bool crashed = false, timedOut = false;
   for (const Json& r : results) {
     const std::string raw = r.value("raw_verdict", "");
-    if (raw == "Fail") {
-      const std::string test = r.value("test", "");
+    const std::string test = r.value("test", "");
+    const auto clean = cleanVerdicts.find(test);
+    if (raw == "Fail" && (clean == cleanVerdicts.end() || clean->second == "Pass")) {
       killedBy.push_back(test.substr(0, test.rfind('.')));
       if (evidence.is_null() && !r["evidence"].is_null()) {
         evidence = r["evidence"];
@@ -238,6 +260,8 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const std::vector<BackendCombination> combinations = selectCombinations(options.backends);
   const std::vector<std::string> mutants = mutantsToRun(options);
   if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
+  if (options.mutantsOnly && mutants.empty())
+    throw std::invalid_argument("nothing to run: --mutants-only with --no-mutants");
 
   const fs::path outDir(options.outDir);
   const fs::path logsDir = outDir / "logs";
@@ -269,12 +293,14 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     Json counts = Json::object();
     for (const std::string& v : kVerdictOrder) counts[v] = 0;
     std::map<std::string, std::vector<Json>> mutantResults;
+    std::map<std::string, std::string> cleanVerdicts;
     for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
       const WorkerTask& task = plan.tasks[i];
       if (task.mutant != "none") {
         mutantResults[task.mutant].push_back(outcome.results[i]);
         continue;
       }
+      cleanVerdicts[task.test] = outcome.results[i].value("raw_verdict", "");
       Json record = testRecord(*sceneOfCase.at(task.test.substr(0, task.test.rfind('.'))), combination.suffix,
                                outcome.results[i], expected);
       const std::string verdict = record["verdict"];
@@ -285,7 +311,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
     Json mutantCounts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
     for (const std::string& mutant : mutants) {
-      Json record = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant]);
+      Json record = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
       const std::string status = record["status"];
       const char* bucket = status == "killed" ? "killed" : status == "survived" ? "survived" : "other";
       mutantCounts[bucket] = mutantCounts[bucket].get<int>() + 1;

@@ -100,8 +100,8 @@ class Worker {
   int run(int start) {
     for (int i = start; i < int(plan_.tasks.size()); ++i) {
       const WorkerTask& task = plan_.tasks[std::size_t(i)];
-      testHooks(task.test);
       if (int status = ensureBackend(task.mutant); status != 0) return status;
+      testHooks(task.test);
       Json result = {{"kind", "result"}, {"index", i}, {"test", task.test}};
       try {
         runTask(task, result);
