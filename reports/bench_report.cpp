@@ -341,6 +341,26 @@ void speedErrorSection(std::ostringstream& out, const Model& m, const Entries& c
   }
 }
 
+// Adds `e` (median, min-max whiskers, at its curve x) to the line of `group`,
+// starting that line in colour `colourIndex` the first time.
+void addCurvePoint(svg::Plot& plot, std::map<std::string, std::size_t>& seriesOf, const std::string& group,
+                   std::size_t colourIndex, const BenchEntry& e) {
+  auto [it, added] = seriesOf.emplace(group, plot.series.size());
+  if (added) {
+    svg::Series s;
+    s.name = group;
+    s.colour = svg::colour(colourIndex);
+    plot.series.push_back(s);
+  }
+  svg::Point p;
+  p.x = *curveX(e.name.x);
+  p.y = *e.medianMs;
+  p.yLow = e.minMs;
+  p.yHigh = e.maxMs;
+  p.id = e.name.full;
+  plot.series[it->second].points.push_back(p);
+}
+
 // One line per group (backend or mode) of frame time against the curve's x.
 std::string curvePlot(const Model& m, const std::string& title, const std::string& scene, const Entries& entries,
                       bool byBackend) {
@@ -353,20 +373,7 @@ std::string curvePlot(const Model& m, const std::string& title, const std::strin
   std::map<std::string, std::size_t> seriesOf;
   for (const BenchEntry* e : entries) {
     const std::string group = byBackend ? backendOf(*e) : e->name.mode;
-    auto [it, added] = seriesOf.emplace(group, plot.series.size());
-    if (added) {
-      svg::Series s;
-      s.name = group;
-      s.colour = svg::colour(byBackend ? m.backendIndex(group) : m.modeIndex(group));
-      plot.series.push_back(s);
-    }
-    svg::Point p;
-    p.x = *curveX(e->name.x);
-    p.y = *e->medianMs;
-    p.yLow = e->minMs;
-    p.yHigh = e->maxMs;
-    p.id = e->name.full;
-    plot.series[it->second].points.push_back(p);
+    addCurvePoint(plot, seriesOf, group, byBackend ? m.backendIndex(group) : m.modeIndex(group), *e);
   }
   for (svg::Series& s : plot.series)
     std::stable_sort(s.points.begin(), s.points.end(), [](const svg::Point& a, const svg::Point& b) { return a.x < b.x; });
@@ -432,20 +439,7 @@ void prepareSection(std::ostringstream& out, const Model& m) {
     std::map<std::string, std::size_t> seriesOf;
     for (const BenchEntry* e : curves) {
       if (e->name.scene != scene) continue;
-      auto [it, added] = seriesOf.emplace(e->name.mode, plot.series.size());
-      if (added) {
-        svg::Series s;
-        s.name = e->name.mode;
-        s.colour = svg::colour(m.modeIndex(e->name.mode));
-        plot.series.push_back(s);
-      }
-      svg::Point p;
-      p.x = *curveX(e->name.x);
-      p.y = *e->medianMs;
-      p.yLow = e->minMs;
-      p.yHigh = e->maxMs;
-      p.id = e->name.full;
-      plot.series[it->second].points.push_back(p);
+      addCurvePoint(plot, seriesOf, e->name.mode, m.modeIndex(e->name.mode), *e);
     }
     const std::size_t measured = plot.series.size();
     for (std::size_t i = 0; i < measured; ++i) {

@@ -23,14 +23,7 @@ report_dir=$(cd "$1" 2>/dev/null && pwd)/report || { echo "FAIL: no folder $1" >
 page="$report_dir/index.html"
 [ -f "$page" ] || { echo "FAIL: no $page" >&2; exit 1; }
 
-chromium=""
-for candidate in chromium chromium-browser; do
-  if command -v "$candidate" >/dev/null; then chromium=$(command -v "$candidate"); break; fi
-done
-if [ -z "$chromium" ]; then
-  echo "NotSupported: chromium not installed (apt-get install chromium; scripts/setup.sh installs it)"
-  exit 77
-fi
+. "$(dirname "${BASH_SOURCE[0]}")/find_chromium.sh"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

@@ -25,14 +25,7 @@ shopt -s nullglob
 pages=("$dir"/*.html)
 [ ${#pages[@]} -gt 0 ] || { echo "FAIL: no .html files in $dir" >&2; exit 1; }
 
-chromium=""
-for candidate in chromium chromium-browser; do
-  if command -v "$candidate" >/dev/null; then chromium=$(command -v "$candidate"); break; fi
-done
-if [ -z "$chromium" ]; then
-  echo "NotSupported: chromium not installed (apt-get install chromium; scripts/setup.sh installs it)"
-  exit 77
-fi
+. "$(dirname "${BASH_SOURCE[0]}")/find_chromium.sh"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
