@@ -19,6 +19,7 @@ int runReferenceCommand(const SceneArguments& args, bool ideal, const std::strin
     const reference::ReferenceRenderer renderer(input.prepared);
     reference::ReferenceOptions options;
     options.ideal = ideal;
+    options.bakedLightsRealtime = input.frame.scene().expect.against == lighting::CompareAgainst::Realtime;  // as compare does
     const reference::ReferenceImages images = renderer.render(input.frame, options);
     const std::filesystem::path dir(outDir);
     imaging::writeExr((dir / "reference.exr").string(), images.value);

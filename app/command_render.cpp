@@ -5,6 +5,7 @@
 #include "app/scene_input.h"
 #include "backends/expected_driver.h"
 #include "comparison/comparison_report.h"
+#include "conformance/cpu_mutants.h"
 #include "conformance/scene_check.h"
 #include "imaging/image_files.h"
 #include "reference/reference_renderer.h"
@@ -37,7 +38,9 @@ int renderOnBackend(const SceneArguments& args, const BackendArguments& backend,
   rendered.input = loadSceneInput(args);
   std::unique_ptr<backends::Backend> renderer;
   if (int status = createBackend(backend, err, renderer); status != kExitSuccess) return status;
-  rendered.image = renderer->render(rendered.input.frame);
+  // A CPU mutant alters the frame, as `compare` does (conformance/cpu_mutants.h).
+  const shaders::Mutant mutant = backendOptions(backend).variant.mutant;
+  rendered.image = renderer->render(conformance::cpuMutantFrame(rendered.input.frame, mutant));
   return kExitSuccess;
 }
 
@@ -66,6 +69,7 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
     conformance::SceneReferences references(input.prepared);
     conformance::CheckOptions options;
     if (args.frameGiven) options.onlyFrame = args.frame;
+    options.mutant = backendOptions(backend).variant.mutant;
     const conformance::SceneCheck check = conformance::checkScene(references, *renderer, options);
 
     const std::string name = caseName(args.scenePath, backend);

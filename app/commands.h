@@ -53,6 +53,15 @@ int runBenchCompareCommand(const std::string& before, const std::string& after, 
 // The hidden `lightcts bench-worker KIND ...` that `bench` starts: argv as
 // main received it (KIND is argv[2]); the rest goes to Google Benchmark.
 int runBenchWorker(int argc, char** argv);
+// `lightcts bake --scene S --out DIR [--no-cache]` (docs/cli.md, docs/baking.md):
+// the lightmaps, shadow masks and channel-overlap maps of every lightmapped
+// object, and DIR/bake.json. A scene without a lightmapped object exits 2.
+struct BakeArguments {
+  std::string scenePath;
+  std::string outDir;
+  bool noCache = false;  // bake even when the cache holds this bake, and do not store it
+};
+int runBakeCommand(const BakeArguments& args, std::ostream& out, std::ostream& err);
 // The hidden `lightcts worker` command that `run` starts (runner/suite_worker.h).
 int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, std::ostream& err);
 

@@ -76,6 +76,11 @@ int main(int argc, char** argv) {
   runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
   runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
+  app::BakeArguments bake;
+  auto* bakeCmd = cli.add_subcommand("bake", "Bake lightmaps and shadow masks; write them with overlap maps and bake.json");
+  bakeCmd->add_option("--scene", bake.scenePath, "Scene file (SPEC 2)")->required();
+  bakeCmd->add_option("--out", bake.outDir, "Output folder")->required();
+  bakeCmd->add_flag("--no-cache", bake.noCache, "Bake even when the bake cache holds this bake, and do not store it");
   runner::BenchOptions bench;
   std::vector<std::string> compareFiles;
   auto* benchCmd = cli.add_subcommand("bench", "Benchmarks: speed against error per backend, cost curves (issue 7)");
@@ -112,6 +117,7 @@ int main(int argc, char** argv) {
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
   scene.frameGiven = compareCmd->get_option("--frame")->count() > 0;
   if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);
+  if (*bakeCmd) return app::runBakeCommand(bake, o, e);
   if (*runCmd) {
     run.workerExecutable = "/proc/self/exe";
     for (int i = 0; i < argc; ++i) run.commandLine += (i ? " " : "") + std::string(argv[i]);

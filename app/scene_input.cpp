@@ -2,6 +2,7 @@
 
 #include "app/exit_status.h"
 #include "backends/backend.h"
+#include "baking/bake.h"
 #include "imaging/image_files.h"
 #include "lighting/scene_loader.h"
 
@@ -18,7 +19,9 @@ SceneInput loadSceneInput(const SceneArguments& args) {
   if (args.frame < 0 || args.frame >= count)
     throw InputError(args.scenePath + ": --frame " + std::to_string(args.frame) + " is out of range: the scene has " +
                      std::to_string(count) + " frame(s), 0.." + std::to_string(count - 1));
-  input.prepared = lighting::prepareScene(std::move(scene));
+  // Scenes with lightmaps are baked here (or read from the bake cache), so
+  // every command renders them with their maps (SPEC 3.6).
+  input.prepared = baking::prepareBakedScene(std::move(scene));
   input.frame = lighting::prepareFrame(input.prepared, args.frame);
   return input;
 }

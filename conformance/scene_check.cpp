@@ -1,5 +1,6 @@
 #include "conformance/scene_check.h"
 
+#include "conformance/cpu_mutants.h"
 #include "conformance/popping.h"
 
 #include <algorithm>
@@ -36,6 +37,12 @@ auto timed(double& total, Work&& work) {
 
 }  // namespace
 
+reference::ReferenceOptions referenceOptionsFor(const lighting::Scene& scene) {
+  reference::ReferenceOptions options;
+  options.bakedLightsRealtime = scene.expect.against == lighting::CompareAgainst::Realtime;
+  return options;
+}
+
 SceneReferences::SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared)
     : prepared_(std::move(prepared)), renderer_(prepared_) {}
 
@@ -49,7 +56,8 @@ const reference::ReferenceImages& SceneReferences::reference(int index) {
   auto it = references_.find(index);
   if (it == references_.end()) {
     const lighting::Frame& f = frame(index);
-    it = references_.emplace(index, timed(referenceMs_, [&] { return renderer_.render(f); })).first;
+    const reference::ReferenceOptions options = referenceOptionsFor(prepared_->scene);
+    it = references_.emplace(index, timed(referenceMs_, [&] { return renderer_.render(f, options); })).first;
   }
   return it->second;
 }
@@ -90,8 +98,8 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
   double worstTightness = -1;
   bool allPass = true;
   for (int f = first; f <= last; ++f) {
-    const lighting::Frame& frame = references.frame(f);
     const reference::ReferenceImages& ref = references.reference(f);
+    const lighting::Frame frame = cpuMutantFrame(references.frame(f), options.mutant);
     if (f == first) timed(check.timings.pipeline, [&] { backend.preparePipeline(frame); });
     timed(check.timings.draw, [&] { backend.draw(frame); });
     imaging::Image result = timed(check.timings.readback, [&] { return backend.readback(); });

@@ -8,6 +8,7 @@
 #include "comparison/image_comparison.h"
 #include "lighting/frame.h"
 #include "reference/reference_renderer.h"
+#include "shaders/shader_variant.h"
 
 #include <map>
 #include <memory>
@@ -16,6 +17,11 @@
 
 namespace conformance {
 
+// The options of the reference a scene is compared against: its
+// `expect.against` (docs/scene-format.md) picks the model's reference or the
+// one with baked lights in real time. `lightcts reference` applies the same rule.
+reference::ReferenceOptions referenceOptionsFor(const lighting::Scene& scene);
+
 // The references of one scene, rendered on first use and kept: a worker that
 // renders the model and then every mutant pays for each reference once.
 class SceneReferences {
@@ -23,8 +29,10 @@ class SceneReferences {
   explicit SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared);
   const std::shared_ptr<const lighting::PreparedScene>& prepared() const { return prepared_; }
   const lighting::Frame& frame(int index);
-  const reference::ReferenceImages& reference(int frame);
-  const reference::ReferenceImages& ideal(int frame);  // SPEC 6 --ideal
+  const reference::ReferenceImages& reference(int frame);  // with referenceOptionsFor(scene)
+  // SPEC 6 --ideal, for the popping score; it keeps the lightmaps whatever
+  // `expect.against` says, so the baked part cancels and only budgets remain.
+  const reference::ReferenceImages& ideal(int frame);
   double referenceMilliseconds() const { return referenceMs_; }  // time spent rendering references so far
 
  private:
@@ -73,6 +81,9 @@ struct SceneCheck {
 struct CheckOptions {
   std::optional<int> onlyFrame;  // check one frame; default every frame of the scene
   int worstCount = 10;           // worst pixels kept per frame
+  // The backend's mutant: a CPU mutant (conformance/cpu_mutants.h) alters the
+  // frame the backend draws; the reference always gets the model's frame.
+  shaders::Mutant mutant = shaders::Mutant::None;
 };
 
 // Throws what the backend throws (NotSupportedError, DriverError).

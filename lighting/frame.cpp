@@ -2,6 +2,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <stdexcept>
+
 namespace lighting {
 namespace {
 
@@ -32,6 +34,7 @@ ShaderFeatures featuresOf(const Frame& frame) {
   bool anyChannel = false;
   for (int c : frame.prepared->shadowMask.channelOfLight) anyChannel |= c >= 0;
   f.shadowMask = anyMask && anyChannel;
+  f.lightmap = anyMask;
   return f;
 }
 
@@ -50,6 +53,20 @@ std::shared_ptr<const PreparedScene> prepareScene(Scene scene) {
   prepared->shadowMask = assignShadowMaskChannels(scene);
   prepared->scene = std::move(scene);
   return prepared;
+}
+
+bool PreparedScene::needsBake() const {
+  for (const Object& o : scene.objects)
+    if (o.hasLightmap()) return true;
+  return false;
+}
+
+const ObjectBake* PreparedScene::bakeOf(int object) const {
+  if (!scene.objects[object].hasLightmap()) return nullptr;
+  if (!baked)
+    throw std::logic_error("scene '" + scene.name +
+                           "' has lightmaps but was prepared without a bake (use baking::prepareBakedScene)");
+  return &baked->objects[object];
 }
 
 bool Frame::perObjectListsEnabled(const Scene& scene) {
@@ -81,7 +98,7 @@ ObjectLights Frame::lightsForObject(int object) const {
 ObjectLights Frame::idealLightsForObject() const {
   ObjectLights lights;
   for (int i = 0; i < int(scene().lights.size()); ++i)
-    if (scene().lights[i].mode != LightMode::Baked) lights.perPixel.push_back(i);
+    if (!isBakedLight(scene(), prepared->shadowMask, i)) lights.perPixel.push_back(i);
   return lights;
 }
 

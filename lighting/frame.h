@@ -4,6 +4,7 @@
 // neither decides on its own which lights count.
 #pragma once
 
+#include "lighting/baked_lighting.h"
 #include "lighting/camera_view.h"
 #include "lighting/mesh.h"
 #include "lighting/object_light_lists.h"
@@ -23,14 +24,24 @@ struct ObjectGeometry {
   BoundingSphere bounds;      // world space (SPEC 5.2)
 };
 
-// What does not change from frame to frame: meshes, transforms, bounds and the
-// bake-time shadow-mask assignment.
+// What does not change from frame to frame: meshes, transforms, bounds, the
+// bake-time shadow-mask assignment and the baked maps.
 struct PreparedScene {
   Scene scene;
   std::vector<ObjectGeometry> objects;
   ShadowMaskAssignment shadowMask;
+  // The lightmaps and shadow masks (SPEC 3.6); null until baked. A scene with
+  // a lightmapped object must come from baking::prepareBakedScene: the
+  // reference and the backends refuse to draw one without its maps.
+  std::shared_ptr<const BakedLighting> baked;
+
+  bool needsBake() const;  // some object has a lightmap
+  // The maps of `object`; throws std::logic_error when the scene needs a bake
+  // that never happened. Null for an object without maps.
+  const ObjectBake* bakeOf(int object) const;
 };
 
+// Geometry and shadow-mask channels only; no bake (baking/bake.h adds it).
 std::shared_ptr<const PreparedScene> prepareScene(Scene scene);
 
 // Which parts of the model a frame uses, so a backend can switch the rest off.
@@ -41,6 +52,7 @@ struct ShaderFeatures {
   bool perObjectLists = false;
   bool vertexLights = false;   // legacy profile only
   bool shadowMask = false;     // a mixed light with a channel on an object with a mask
+  bool lightmap = false;       // some object has a lightmap (SPEC 3.6)
   bool ambient = false;
 };
 
@@ -62,7 +74,9 @@ struct Frame {
   static bool perObjectListsEnabled(const Scene& scene);
   // The lights that reach an object under the scene's budgets (SPEC 4).
   ObjectLights lightsForObject(int object) const;
-  // SPEC 6 `--ideal`: every light that is not baked, per pixel, no budgets.
+  // SPEC 6 `--ideal`: every light that is not baked, per pixel, no budgets. A
+  // mixed light demoted by SPEC 5.3 counts as baked: it lives in the lightmap,
+  // which `--ideal` keeps.
   ObjectLights idealLightsForObject() const;
 };
 

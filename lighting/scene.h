@@ -104,10 +104,16 @@ struct Frames {
   std::vector<CameraKeyframe> cameraPath;  // empty, or at least two keyframes
 };
 
+// What a scene is compared against (extension of SPEC 2, docs/scene-format.md):
+// the reference of the model, or an idealised one in which the baked lights on
+// lightmapped objects are evaluated in real time per pixel (docs/model.md).
+enum class CompareAgainst { Reference, Realtime };
+
 struct Expectation {
   double toleranceScale = 1;
   long long maxFailingPixels = 0;
   bool expectFail = false;
+  CompareAgainst against = CompareAgainst::Reference;
 };
 
 struct Scene {

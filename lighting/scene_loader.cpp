@@ -173,7 +173,8 @@ constexpr std::array<std::string_view, 13> kLightKeys{
     "color", "intensity", "mode",     "shadows",   "shadow_strength", "bake_falloff"};
 constexpr std::array<std::string_view, 2> kFramesKeys{"count", "camera_path"};
 constexpr std::array<std::string_view, 2> kKeyframeKeys{"position", "target"};
-constexpr std::array<std::string_view, 3> kExpectKeys{"tolerance_scale", "max_failing_pixels", "expect_fail"};
+constexpr std::array<std::string_view, 4> kExpectKeys{"tolerance_scale", "max_failing_pixels", "expect_fail",
+                                                     "against"};
 
 constexpr std::array<Choice<Projection>, 2> kProjections{
     {{"perspective", Projection::Perspective}, {"orthographic", Projection::Orthographic}}};
@@ -191,6 +192,9 @@ constexpr std::array<Choice<RenderPath>, 2> kRenderPaths{
     {{"forward", RenderPath::Forward}, {"deferred", RenderPath::Deferred}}};
 constexpr std::array<Choice<DeferredBuffer>, 3> kDeferredBuffers{
     {{"hdr32", DeferredBuffer::Hdr32}, {"hdr16", DeferredBuffer::Hdr16}, {"ldr8", DeferredBuffer::Ldr8}}};
+// Extension of SPEC 2 (docs/scene-format.md, `expect.against`).
+constexpr std::array<Choice<CompareAgainst>, 2> kCompareAgainst{
+    {{"reference", CompareAgainst::Reference}, {"realtime", CompareAgainst::Realtime}}};
 
 // `v` scaled to unit length, or nullopt for the zero vector. Dividing by the
 // largest component first keeps tiny and huge vectors from under- or overflowing.
@@ -653,6 +657,7 @@ class SceneReader {
       expect.maxFailingPixels = readInteger(*pixels, 0, kMaxExactInteger);
     }
     if (auto expectFail = member(node, "expect_fail")) expect.expectFail = readBool(*expectFail);
+    if (auto against = member(node, "against")) expect.against = readChoice(*against, kCompareAgainst);
     return expect;
   }
 

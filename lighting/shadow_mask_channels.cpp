@@ -275,6 +275,10 @@ ShadowMaskEntry assign(ShadowMaskAssignment& result, int light, unsigned taken) 
 
 }  // namespace
 
+bool isBakedLight(const Scene& scene, const ShadowMaskAssignment& assignment, int light) {
+  return scene.lights[light].mode == LightMode::Baked || assignment.demotedLight[light];
+}
+
 ShadowMaskAssignment assignShadowMaskChannels(const Scene& scene) {
   ShadowMaskAssignment result;
   result.channelOfLight.assign(scene.lights.size(), -1);

@@ -29,6 +29,11 @@ struct ShadowMaskAssignment {
 // result is exactly the greedy of SPEC 5.3.
 ShadowMaskAssignment assignShadowMaskChannels(const Scene& scene);
 
+// SPEC 3.6 and 5.3: a light lives in the lightmaps, never in real time, when its
+// mode is `baked` or it is a mixed light this assignment demoted. The one
+// definition that selection, the baker and the reference share.
+bool isBakedLight(const Scene& scene, const ShadowMaskAssignment& assignment, int light);
+
 // The greedy of SPEC 5.3 as written: every light tested against every earlier
 // holder, O(n^2). The definition the grid version is tested against.
 ShadowMaskAssignment assignShadowMaskChannelsBruteForce(const Scene& scene);

@@ -31,7 +31,7 @@ LightSelection selectVisibleLights(const Scene& scene, const CameraView& view,
   std::vector<std::pair<double, int>> directionalKeys, otherKeys;
   for (int i = 0; i < int(scene.lights.size()); ++i) {
     const Light& l = scene.lights[i];
-    if (l.mode == LightMode::Baked || shadowMask.demotedLight[i]) continue;
+    if (isBakedLight(scene, shadowMask, i)) continue;
     if (!isLightVisible(l, frustum)) continue;
     if (l.type == LightType::Directional) {
       directionalKeys.emplace_back(brightness(i), i);

@@ -12,7 +12,8 @@ namespace reference {
 using namespace lighting;
 namespace tol = tolerance;
 
-LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::vector<double>& weights) {
+LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::vector<double>& weights,
+                               const std::vector<int>& shadowMaskChannels) {
   lights_.reserve(scene.lights.size());
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
@@ -24,26 +25,40 @@ LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::v
     p.spotDirection = -l.direction;  // spotDir points back toward the light (SPEC 3.2)
     p.invRangeSq = inverseRangeSquared(l.range);
     p.spot = lightSpotFactors(l, profile);
+    // SPEC 3.5: only a channel c >= 0 with strength s > 0 attenuates.
+    if (!shadowMaskChannels.empty() && shadowMaskChannels[i] >= 0 && l.shadowStrength > 0) {
+      p.shadowMaskChannel = shadowMaskChannels[i];
+      p.shadowStrength = l.shadowStrength;
+    }
     lights_.push_back(p);
   }
 }
 
 void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
-                                const PositionContext& where, LightSum& sum) const {
+                                const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask) const {
   const double u = tol::kUnitRoundoff;
   const double pointMagnitude = glm::length(p - where.camera) + where.objectExtent;
   Vec3 absoluteSum(0.0);
   for (int index : lights) {
     const Prepared& light = lights_[index];
     ++sum.evaluations;
+    // SPEC 3.5: shadowMask = lerp(1, mask[c], s). A filter error e in mask[c]
+    // moves it by s e; the lerp and its product add kShadowMaskRoundingSteps.
+    double shadowMask = 1, shadowMaskError = 0, maskRounding = 0;
+    if (mask && light.shadowMaskChannel >= 0) {
+      const int c = light.shadowMaskChannel;
+      shadowMask = 1.0 + light.shadowStrength * (mask->value[c] - 1.0);
+      shadowMaskError = light.shadowStrength * mask->error[c];
+      maskRounding = tol::kShadowMaskRoundingSteps * u;
+    }
     if (light.directional) {
       // SPEC 3.1: A * finalColor * saturate(dot(N, L)) * shadowMask.
       const double nl = saturate(glm::dot(N, light.towardLight));
-      const Vec3 term = light.finalColor * (nl * light.shadowMask);
+      const Vec3 term = light.finalColor * (nl * shadowMask);
       sum.value += term;
       absoluteSum += term;
-      sum.errorBound += term * (tol::kRoundingStepsPerLightTerm * u) +
-                        light.finalColor * (light.shadowMask * tol::kUnitDotAbsError);
+      sum.errorBound += term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
+                        light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
       continue;
     }
     // SPEC 3.2.
@@ -56,7 +71,7 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double rangeAtt = g * g;
     const double s = saturate(glm::dot(light.spotDirection, L) * light.spot.a + light.spot.b);
     const double spotAtt = s * s;
-    const double falloff = light.shadowMask * rangeAtt / distSqr;
+    const double falloff = shadowMask * rangeAtt / distSqr;
     const Vec3 term = light.finalColor * (nl * spotAtt * falloff);
     sum.value += term;
     absoluteSum += term;
@@ -69,12 +84,15 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
                             (pointMagnitude + glm::length(light.position - where.camera));
     const double directionError = std::min(1.0, tol::kUnitDotAbsError + rayError / distance);
     const double distSqrRelError = tol::kRoundingStepsPerLightTerm * u + std::min(1.0, 2.0 * rayError / distance);
-    const double baseMagnitude = light.shadowMask * rangeAtt / distSqr;
+    const double baseMagnitude = shadowMask * rangeAtt / distSqr;
     const double fromChain = nl * spotAtt * baseMagnitude * distSqrRelError;
     const double fromNdotL = spotAtt * baseMagnitude * directionError;
     const double fromSpot = nl * baseMagnitude * 2.0 * s * std::abs(light.spot.a) * directionError;
-    const double fromRange = nl * spotAtt * light.shadowMask / distSqr * 4.0 * g * q * q * distSqrRelError;
-    sum.errorBound += light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange);
+    const double fromRange = nl * spotAtt * shadowMask / distSqr * 4.0 * g * q * q * distSqrRelError;
+    // The mask's filtering error acts on the unmasked term.
+    const double fromMask = nl * spotAtt * rangeAtt / distSqr * shadowMaskError;
+    sum.errorBound += light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +
+                      term * maskRounding;
   }
   // The running sum rounds once per added term.
   sum.errorBound += absoluteSum * (double(lights.size()) * u);

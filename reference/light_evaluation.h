@@ -3,6 +3,7 @@
 // part of the tolerance model, docs/tolerances.md).
 #pragma once
 
+#include "lighting/baked_lighting.h"
 #include "lighting/light_math.h"
 #include "lighting/scene.h"
 
@@ -24,17 +25,31 @@ struct PositionContext {
   double objectExtent = 0;  // |object centre - camera| + object radius
 };
 
+// The shadow mask at a point (SPEC 3.5): the object's mask sampled at the
+// fragment's lightmap UV, and per channel the bound on how far a float32
+// filter's sample may be from it (lightmap_sampling.h). No mask: all ones.
+struct ShadowMaskAtPoint {
+  lighting::Vec4 value{1.0};
+  lighting::Vec4 error{0.0};
+};
+
 class LightEvaluator {
  public:
   // `weights`: a factor on each scene light's finalColor (the fade weights of
   // lighting/light_fade.h, LightSelection::weightsBySceneLight); empty: all 1,
   // as for `--ideal`. The factor is exact in the model (the packed data holds
   // float(finalColor * weight)), so the error bound scales with it.
-  LightEvaluator(const lighting::Scene& scene, lighting::Profile profile, const std::vector<double>& weights = {});
+  // `shadowMaskChannels`: per scene light, its shadow-mask channel or -1
+  // (ShadowMaskAssignment::channelOfLight); empty: no light has one.
+  LightEvaluator(const lighting::Scene& scene, lighting::Profile profile, const std::vector<double>& weights = {},
+                 const std::vector<int>& shadowMaskChannels = {});
 
   // Adds the contributions of `lights` (scene indices) at p with unit normal N.
+  // `mask`: the object's shadow mask at p, or null where there is none (an
+  // object without maps, and legacy vertex lights, which the GPU evaluates
+  // with a mask of 1): SPEC 3.5's shadowMask is then 1.
   void accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
-                  const PositionContext& where, LightSum& sum) const;
+                  const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask = nullptr) const;
 
  private:
   struct Prepared {
@@ -45,7 +60,8 @@ class LightEvaluator {
     Vec3 spotDirection{0.0};
     double invRangeSq = 0;
     lighting::SpotFactors spot;
-    double shadowMask = 1;  // SPEC 3.5; 1 until lightmaps exist
+    int shadowMaskChannel = -1;  // SPEC 3.5: c, or -1 (no channel, or strength 0)
+    double shadowStrength = 0;
   };
   std::vector<Prepared> lights_;
 };

@@ -1,6 +1,8 @@
 #include "reference/reference_renderer.h"
 
+#include "reference/baked_lights_realtime.h"
 #include "reference/light_evaluation.h"
+#include "reference/lightmap_sampling.h"
 #include "reference/parallel_rows.h"
 #include "reference/tolerance_model.h"
 
@@ -29,6 +31,11 @@ struct SurfaceKey {
 struct Shaded {
   Vec3 value{0.0};
   Vec3 bound{0.0};
+  // Against real time only: |bilinear of the texel-centre irradiance - the
+  // irradiance here| (RealtimeBakedLights::Sample::interpolation). A GPU
+  // samples the map at a snapped point, so the pixel takes the largest of
+  // this over the centre and its sub-pixel shifts.
+  Vec3 interpolation{0.0};
   int evaluations = 0;
 };
 
@@ -40,24 +47,30 @@ struct FrameShading {
   LightEvaluator evaluator;
   std::vector<ObjectLights> lights;       // per object
   std::vector<PositionContext> contexts;  // per object
+  std::vector<const ObjectBake*> bakes;   // per object: its maps, or null (SPEC 3.5, 3.6)
+  std::optional<RealtimeBakedLights> realtimeBaked;  // ReferenceOptions::bakedLightsRealtime
   std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
   std::vector<Vec3> vertexBound;
 
-  FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, bool ideal)
+  FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, const ReferenceOptions& options)
       : frame(f),
         world(w),
         bvh(b),
         // The fade weights are part of the budgets: `--ideal` has neither.
         evaluator(f.scene(), f.scene().pipeline.profile,
-                  ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size())) {
+                  options.ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size()),
+                  f.prepared->shadowMask.channelOfLight) {
     const auto& objects = f.prepared->objects;
     for (int o = 0; o < int(objects.size()); ++o) {
-      lights.push_back(ideal ? f.idealLightsForObject() : f.lightsForObject(o));
+      lights.push_back(options.ideal ? f.idealLightsForObject() : f.lightsForObject(o));
+      bakes.push_back(f.prepared->bakeOf(o));  // throws for a scene that needs a bake it did not get
       const BoundingSphere& bounds = objects[o].bounds;
       contexts.push_back({f.view.camera.position, glm::length(bounds.centre - f.view.camera.position) + bounds.radius});
     }
+    if (options.bakedLightsRealtime) realtimeBaked.emplace(*f.prepared, b, options.threads);
     // Vertex lights are evaluated at the vertices with the rotated, normalised
-    // vertex normal, then interpolated with the hit's barycentrics.
+    // vertex normal, then interpolated with the hit's barycentrics. They get
+    // no shadow mask: the GPU's vertex stage passes a mask of 1.
     vertexValue.assign(w.vertices.size(), Vec3(0.0));
     vertexBound.assign(w.vertices.size(), Vec3(0.0));
     for (std::size_t v = 0; v < w.vertices.size(); ++v) {
@@ -99,8 +112,34 @@ struct FrameShading {
     const Vec3& n2 = world.vertices[tri.vertex[2]].normal;
     const Vec3 N = glm::normalize(b0 * n0 + hit.b1 * n1 + hit.b2 * n2);
 
+    // SPEC 3.5, 3.6: the object's maps at the hit's lightmap UV.
+    const ObjectBake* bake = bakes[tri.object];
+    ShadowMaskAtPoint mask;
+    Vec3 baked(0.0), bakedBound(0.0), interpolation(0.0);
+    if (bake) {
+      const Object& object = frame.scene().objects[tri.object];
+      const Vec2 uv = lightmapUvOfWorldPoint(object.mesh, frame.prepared->objects[tri.object].transform, p);
+      if (!bake->shadowMask.empty()) {
+        const BilinearSample m = sampleBilinear(bake->shadowMask, uv);
+        mask.value = m.value;
+        mask.error = filteringErrorBound(m, bake->shadowMask.resolution);
+      }
+      if (realtimeBaked) {
+        const RealtimeBakedLights::Sample e = realtimeBaked->sample(tri.object, p, N, uv);
+        baked = e.value;
+        bakedBound = e.allowance - e.interpolation;
+        interpolation = e.interpolation;
+      } else if (!bake->lightmap.empty()) {
+        const BilinearSample e = sampleBilinear(bake->lightmap, uv);
+        const Vec4 bound = filteringErrorBound(e, bake->lightmap.resolution);
+        baked = Vec3(e.value);
+        bakedBound = Vec3(bound);
+      }
+    }
+
     LightSum sum;
-    evaluator.accumulate(lights[tri.object].perPixel, p, N, contexts[tri.object], sum);
+    evaluator.accumulate(lights[tri.object].perPixel, p, N, contexts[tri.object], sum,
+                         bake && !bake->shadowMask.empty() ? &mask : nullptr);
     if (!lights[tri.object].perVertex.empty()) {
       sum.value += b0 * vertexValue[tri.vertex[0]] + hit.b1 * vertexValue[tri.vertex[1]] +
                    hit.b2 * vertexValue[tri.vertex[2]];
@@ -110,10 +149,11 @@ struct FrameShading {
     const Scene& scene = frame.scene();
     const Vec3& albedo = scene.objects[tri.object].albedo;
     // SPEC 3: colour = A * ambient + A * lightmap(p) + the light sums.
-    // Lightmaps arrive with the baker; until then the term is 0.
     Shaded shaded;
-    shaded.value = albedo * (scene.ambient + sum.value);
-    shaded.bound = albedo * sum.errorBound + glm::abs(shaded.value) * (tol::kFinalCombineSteps * tol::kUnitRoundoff);
+    shaded.value = albedo * (scene.ambient + baked + sum.value);
+    const double combineSteps = tol::kFinalCombineSteps + (bake ? tol::kLightmapAddRoundingSteps : 0.0);
+    shaded.bound = albedo * (sum.errorBound + bakedBound) + glm::abs(shaded.value) * (combineSteps * tol::kUnitRoundoff);
+    shaded.interpolation = albedo * interpolation;
     shaded.evaluations = sum.evaluations;
     return shaded;
   }
@@ -157,7 +197,7 @@ ReferenceRenderer::ReferenceRenderer(std::shared_ptr<const PreparedScene> prepar
 
 ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOptions& options) const {
   const int width = frame.view.width, height = frame.view.height;
-  const FrameShading shading(frame, world_, bvh_, options.ideal);
+  const FrameShading shading(frame, world_, bvh_, options);
   const double toleranceScale = frame.scene().expect.toleranceScale;
 
   // Pass 1: what each pixel centre sees; pass 2 needs the neighbours' answers
@@ -212,7 +252,7 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         rowEvaluations += centre.evaluations;
         value = centre.value;
         // Sub-pixel shifts: the largest change of the shaded value.
-        Vec3 shiftChange(0.0);
+        Vec3 shiftChange(0.0), interpolation = centre.interpolation;
         const double shifts[4][2] = {{tol::kSubpixelShiftPx, 0}, {-tol::kSubpixelShiftPx, 0},
                                      {0, tol::kSubpixelShiftPx}, {0, -tol::kSubpixelShiftPx}};
         for (const auto& s : shifts) {
@@ -224,8 +264,9 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
           const Shaded shifted = shading.shade(*shiftedHit);
           rowEvaluations += shifted.evaluations;
           shiftChange = glm::max(shiftChange, glm::abs(shifted.value - value));
+          interpolation = glm::max(interpolation, shifted.interpolation);
         }
-        tolerance += centre.bound + shiftChange +
+        tolerance += centre.bound + shiftChange + interpolation +
                      glm::abs(value) * (tol::kStorageRoundingSteps * tol::kUnitRoundoff);
       }
       tolerance *= toleranceScale;

@@ -16,6 +16,11 @@ namespace reference {
 
 struct ReferenceOptions {
   bool ideal = false;  // SPEC 6 `--ideal`: every non-baked light per pixel, no budgets
+  // `"expect": {"against": "realtime"}` (docs/model.md): on lightmapped
+  // objects the baked lights are evaluated per pixel in real time instead of
+  // read from the lightmap, with an interpolation allowance in the tolerance
+  // (baked_lights_realtime.h). Combines with `ideal`.
+  bool bakedLightsRealtime = false;
   int threads = 0;     // 0: every hardware thread
 };
 

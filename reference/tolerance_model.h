@@ -5,6 +5,7 @@
 // implementation of SPEC 3 may show against the double-precision value:
 //
 //   tolerance = tolerance_scale * ( albedo * arithmetic bound of the light sum
+//                                   + albedo * filtering bound of the lightmap
 //                                   + largest change over sub-pixel shifts
 //                                   + storage rounding of the result
 //                                   + flush-to-zero floor )
@@ -52,6 +53,37 @@ constexpr double kStorageRoundingSteps = 1;
 // Summing n light terms adds up to n roundings of the running sum; the final
 // albedo product and ambient add two more.
 constexpr double kFinalCombineSteps = 2;
+
+// --- Texture filtering of the lightmap and the shadow mask (SPEC 3.5, 3.6) ---
+
+// SPEC 7: a LINEAR filter's weights are exact to 2^-4 (Vulkan's minimum
+// subTexelPrecisionBits = 4), so each weight may be off by up to 2^-4.
+constexpr double kFilterWeightPrecision = 0x1p-4;
+
+// One weight error per axis of the bilinear blend: a sample may move by up to
+// 2 x 2^-4 of the spread (max - min) of the four texels it blends.
+constexpr double kFilterWeightErrorsPerSample = 2;
+
+// The blend itself in float32 (three lerps of 2 operations each), relative to
+// the largest texel magnitude; the texels are RGBA32F, so fetching is exact.
+constexpr double kFilterBlendRoundingSteps = 6;
+
+// The lightmap UV in float32, absolute (|uv| <= 1 on the plane): the vertex
+// stage's x * (1/sx) + 0.5 (float local x, float 1/sx, product, sum: 3u after
+// rounding up) plus the interpolator (perspective-correct weights and a sum of
+// three products, or a plane equation: 13u, rounded up) = 16u.
+constexpr double kLightmapUvRoundingSteps = 16;
+
+// Against real time (expect.against = "realtime"): a correct bake stores each
+// texel's double irradiance rounded once to float32 (RGBA32F).
+constexpr double kTexelStorageRoundingSteps = 1;
+
+// Adding the sampled lightmap to the light sum: one more rounding of the result.
+constexpr double kLightmapAddRoundingSteps = 1;
+
+// mix(1, mask[c], strength) (2 operations) and its product with the light's
+// attenuation (1): relative to the light term.
+constexpr double kShadowMaskRoundingSteps = 3;
 
 // GPUs may flush denormals to zero (Vulkan allows it for 32-bit floats): any
 // value below the smallest normal float may read as 0.

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace reports {
 namespace {
@@ -97,6 +98,15 @@ svg::Point plainPoint(double x, double y) {
 
 bool isPrepare(const BenchEntry& e) { return e.name.kind == "prepare"; }
 bool hasError(const BenchEntry& e) { return e.name.kind == "frame" && e.medianMs && counter(e, "err_rmse"); }
+// N of a `lightmap-N` mode (docs/bench-format.md); nullopt for other modes.
+std::optional<double> lightmapResolution(const BenchEntry& e) {
+  constexpr std::string_view prefix = "lightmap-";
+  if (e.name.mode.rfind(prefix, 0) != 0) return std::nullopt;
+  const auto n = curveX(std::string_view(e.name.mode).substr(prefix.size()));
+  if (!n || *n < 1 || e.name.mode.find('x', prefix.size()) != std::string::npos) return std::nullopt;
+  return n;
+}
+
 bool isCurve(const BenchEntry& e) {
   return e.name.scene.rfind("curve-", 0) == 0 && curveX(e.name.x).has_value() && e.medianMs.has_value();
 }
@@ -109,10 +119,11 @@ std::vector<std::string> scenesOf(const Entries& entries) {
   std::stable_sort(scenes.begin(), scenes.end(), [](const std::string& a, const std::string& b) {
     const auto rank = [](const std::string& s) {
       if (s == "lights64-1280x720") return 0;
-      if (s == "curve-lights") return 1;
-      if (s == "curve-resolution") return 2;
-      if (s == "curve-objects") return 3;
-      return 4;
+      if (s.rfind("lightmap-", 0) == 0) return 1;
+      if (s == "curve-lights") return 2;
+      if (s == "curve-resolution") return 3;
+      if (s == "curve-objects") return 4;
+      return 5;
     };
     return rank(a) < rank(b);
   });
@@ -123,6 +134,7 @@ std::string xAxisLabel(const std::string& scene) {
   if (scene == "curve-lights") return "lights";
   if (scene == "curve-resolution") return "pixels";
   if (scene == "curve-objects") return "objects";
+  if (scene == "curve-lightmap") return "lightmap texels";
   return scene.substr(6);
 }
 
@@ -196,7 +208,8 @@ std::vector<Column> allColumns(const Entries& entries) {
       {"lights_per_pixel", "lights/pixel"}, {"pixels_per_s", "pixels/s"},
       {"pixel_light_evals_per_s", "pixel-light evals/s"}, {"err_rmse", "err_rmse"},
       {"err_max_abs", "err_max_abs"}, {"err_psnr_db", "err_psnr_db"},
-      {"err_perceptual_fail", "err_perceptual_fail"}, {"flops_per_pixel_light", "flops/pixel-light"},
+      {"err_perceptual_fail", "err_perceptual_fail"}, {"bake_ms", "bake ms"}, {"bake_runs", "bake runs"},
+      {"lightmap_texels", "lightmap texels"}, {"flops_per_pixel_light", "flops/pixel-light"},
       {"limit_ms", "limit ms"}};
   for (const auto& [key, head] : known)
     columns.push_back({head, [key = key](const BenchEntry& e) { return counter(e, key); }});
@@ -299,10 +312,13 @@ void scatterSection(std::ostringstream& out, const Model& m, const std::string& 
   for (std::size_t i : order) frontLine.points.push_back(plainPoint(te[i].first, te[i].second));
   plot.series.insert(plot.series.begin(), frontLine);  // drawn under the points
 
+  // The lightmap modes carry their bake time: the price paid before the frame.
+  const bool withBake =
+      std::any_of(points.begin(), points.end(), [](const BenchEntry* e) { return counter(*e, "bake_ms").has_value(); });
   out << "<h3>" << escapeText(scene) << "</h3>\n" << svg::render(plot);
   out << "<table class=\"bench pareto\">\n<tr><th>backend</th><th>mode</th><th>Pareto front</th><th>median ms</th>"
          "<th>min ms</th><th>max ms</th><th>n</th><th>err_rmse</th><th>err_max_abs</th><th>err_psnr_db</th>"
-         "<th>\u00d7 limit</th></tr>\n";
+      << (withBake ? "<th>bake ms</th>" : "") << "<th>\u00d7 limit</th></tr>\n";
   std::vector<std::size_t> rows(points.size());
   for (std::size_t i = 0; i < rows.size(); ++i) rows[i] = i;
   std::stable_sort(rows.begin(), rows.end(), [&](std::size_t a, std::size_t b) { return te[a] < te[b]; });
@@ -313,7 +329,9 @@ void scatterSection(std::ostringstream& out, const Model& m, const std::string& 
         << fmt(e.medianMs) << "</td><td class=\"n\">" << fmt(e.minMs) << "</td><td class=\"n\">" << fmt(e.maxMs)
         << "</td><td class=\"n\">" << e.count << "</td><td class=\"n\">" << fmt(counter(e, "err_rmse"))
         << "</td><td class=\"n\">" << fmt(counter(e, "err_max_abs")) << "</td><td class=\"n\">"
-        << fmt(counter(e, "err_psnr_db")) << "</td><td class=\"n\">" << fmt(limitRatio(e), 3) << "</td></tr>\n";
+        << fmt(counter(e, "err_psnr_db")) << "</td>";
+    if (withBake) out << "<td class=\"n\">" << fmt(counter(e, "bake_ms")) << "</td>";
+    out << "<td class=\"n\">" << fmt(limitRatio(e), 3) << "</td></tr>\n";
   }
   out << "</table>\n";
 }
@@ -338,6 +356,94 @@ void speedErrorSection(std::ostringstream& out, const Model& m, const Entries& c
     for (const BenchEntry* e : withError)
       if (e->name.scene == scene) points.push_back(e);
     scatterSection(out, m, scene, points, byBackend);
+  }
+}
+
+// A line of `plot` per group, started in colour `colourIndex` the first time.
+svg::Series& lineOf(svg::Plot& plot, std::map<std::string, std::size_t>& seriesOf, const std::string& group,
+                    std::size_t colourIndex, bool dashed) {
+  auto [it, added] = seriesOf.emplace(group, plot.series.size());
+  if (added) {
+    svg::Series s;
+    s.name = group;
+    s.colour = svg::colour(colourIndex);
+    s.dashed = dashed;
+    plot.series.push_back(s);
+  }
+  return plot.series[it->second];
+}
+
+// The `lightmap-N` modes (docs/bench-format.md) against N: the error of the
+// baked image against the same lights in real time, and the bake time
+// beside the frame time; one line per backend (overview) or per quantity (a
+// backend page), then the table with the scene's `realtime` point for
+// comparison. Nothing when no lightmap mode ran.
+void lightmapSection(std::ostringstream& out, const Model& m, const Entries& candidates, bool byBackend) {
+  Entries maps;
+  for (const BenchEntry* e : candidates)
+    if (e->name.kind == "frame" && e->medianMs && lightmapResolution(*e)) maps.push_back(e);
+  if (maps.empty()) return;
+  out << "<h2 id=\"lightmap\">Lightmap resolution</h2>\n<p class=\"note\">The <code>lightmap-N</code> modes: the "
+         "scene's lights baked into an N \u00d7 N lightmap (SPEC 3.6), drawn and compared with the "
+         "<code>--ideal</code> reference of the same lights lit in real time, so the error is what the bake loses "
+         "(resolution, bilinear filtering, and the baked shadow that real time does not draw). The bake time is the "
+         "median of fresh bakes (no cache, every core) of that process; the frame time is the median draw "
+         "(<code>frame</code>). The <code>realtime</code> row is the same lights lit per pixel, against the same "
+         "reference.</p>\n";
+  for (const std::string& scene : scenesOf(maps)) {
+    svg::Plot errors;
+    errors.title = scene + ": error against real time";
+    errors.x = {"lightmap resolution N (N \u00d7 N texels)", svg::Scale::Log2, false};
+    errors.y = {"error against real time", svg::Scale::Log10, false};  // the legend names the lines
+    svg::Plot times;
+    times.title = scene + ": bake and frame time";
+    times.x = errors.x;
+    times.y = {"median time, ms", svg::Scale::Log10, false};
+    std::map<std::string, std::size_t> errorLines, timeLines;
+    Entries rows;
+    for (const BenchEntry* e : maps) {
+      if (e->name.scene != scene) continue;
+      rows.push_back(e);
+      const double n = *lightmapResolution(*e);
+      const std::string group = byBackend ? backendOf(*e) : "";
+      const std::size_t colourBase = byBackend ? m.backendIndex(group) : 0;
+      const auto add = [&](svg::Plot& plot, std::map<std::string, std::size_t>& lines, const std::string& what,
+                           std::size_t colour, bool dashed, std::optional<double> y) {
+        if (!y) return;
+        svg::Point p = plainPoint(n, *y);
+        p.id = backendOf(*e) + "/" + e->name.mode + " " + what;
+        lineOf(plot, lines, byBackend ? group + " " + what : what, colour, dashed).points.push_back(p);
+      };
+      add(errors, errorLines, "err_rmse", colourBase, false, counter(*e, "err_rmse"));
+      add(errors, errorLines, "err_max_abs", byBackend ? colourBase : 1, true, counter(*e, "err_max_abs"));
+      add(times, timeLines, "bake", colourBase, false, counter(*e, "bake_ms"));
+      add(times, timeLines, "frame", byBackend ? colourBase : 1, true, e->medianMs);
+    }
+    for (svg::Plot* plot : {&errors, &times})
+      for (svg::Series& line : plot->series)
+        std::stable_sort(line.points.begin(), line.points.end(),
+                         [](const svg::Point& a, const svg::Point& b) { return a.x < b.x; });
+    out << "<h3>" << escapeText(scene) << "</h3>\n<div class=\"plotbox\">" << svg::render(errors)
+        << svg::render(times) << "</div>\n";
+    for (const BenchEntry* e : candidates)  // the real-time point of the same scene
+      if (e->name.kind == "frame" && e->name.scene == scene && e->name.mode == "realtime") rows.push_back(e);
+    out << "<table class=\"bench lightmap\">\n<tr><th>backend</th><th>mode</th><th>N</th><th>bake ms</th>"
+           "<th>bake runs</th><th>median frame ms</th><th>err_rmse</th><th>err_max_abs</th><th>err_psnr_db</th>"
+           "<th>err_perceptual_fail</th></tr>\n";
+    for (const BenchEntry* e : rows) {
+      out << "<tr><td>" << escapeText(backendOf(*e)) << "</td><td>" << escapeText(e->name.mode) << "</td>";
+      if (!e->error.empty() && !e->medianMs) {
+        out << "<td class=\"err\" colspan=\"8\">error: " << escapeText(e->error) << "</td></tr>\n";
+        continue;
+      }
+      out << "<td class=\"n\">" << fmt(lightmapResolution(*e)) << "</td><td class=\"n\">"
+          << fmt(counter(*e, "bake_ms")) << "</td><td class=\"n\">" << fmt(counter(*e, "bake_runs"))
+          << "</td><td class=\"n\">" << fmt(e->medianMs) << "</td><td class=\"n\">"
+          << fmt(counter(*e, "err_rmse")) << "</td><td class=\"n\">" << fmt(counter(*e, "err_max_abs"))
+          << "</td><td class=\"n\">" << fmt(counter(*e, "err_psnr_db")) << "</td><td class=\"n\">"
+          << fmt(counter(*e, "err_perceptual_fail")) << "</td></tr>\n";
+    }
+    out << "</table>\n";
   }
 }
 
@@ -540,6 +646,7 @@ std::string benchOverviewHtml(const Json& bench) {
 
   const Entries gpu = m.select([](const BenchEntry& e) { return !isPrepare(e); });
   speedErrorSection(out, m, gpu, true);
+  lightmapSection(out, m, gpu, true);
   costCurveSection(out, m, gpu, true);
   prepareSection(out, m);
   out << "</body>\n</html>\n";
@@ -568,6 +675,7 @@ std::string benchBackendHtml(const Json& bench, const std::string& backend) {
 
   const Entries mine = m.select([&](const BenchEntry& e) { return !isPrepare(e) && backendOf(e) == backend; });
   speedErrorSection(out, m, mine, false);
+  lightmapSection(out, m, mine, false);
   costCurveSection(out, m, mine, false);
   out << "<h2 id=\"table\">Every benchmark</h2>\n<p class=\"note\">Times in ms: the median over the repetitions "
          "(Google Benchmark's median aggregate when present), their minimum, maximum and standard deviation, and "

@@ -53,6 +53,7 @@ std::string htmlReport(const Json& results, const fs::path& runDir, const fs::pa
   html::backendSummary(out, page);
   html::mutantTable(out, page);
   html::attentionSections(out, page);
+  html::detectedMismatchSections(out, page);
   html::allTestsTable(out, page);
   html::poppingTables(out, page);
   html::slowestTests(out, page);

@@ -32,6 +32,8 @@ void slowestTests(std::ostream& out, const Page& page);
 
 // html_tests.cpp
 void attentionSections(std::ostream& out, const Page& page);
+// expect_fail scenes whose mismatch was detected, with their evidence.
+void detectedMismatchSections(std::ostream& out, const Page& page);
 void allTestsTable(std::ostream& out, const Page& page);
 void poppingTables(std::ostream& out, const Page& page);
 

@@ -131,6 +131,22 @@ void attentionSections(std::ostream& out, const Page& page) {
   for (const Json* test : tests) attentionSection(out, page, *test);
 }
 
+void detectedMismatchSections(std::ostream& out, const Page& page) {
+  // expect_fail scenes (SPEC 7) pass by failing: their evidence shows how far
+  // the known mismatch (e.g. legacy baked falloff against real time) is off.
+  std::vector<const Json*> tests;
+  for (const Json& test : arrayField(page.results, "tests")) {
+    const Json& metrics = objectField(test, "metrics");
+    if (metrics.is_object() && metrics.value("expect_fail", false) && textField(test, "verdict") == "Pass")
+      tests.push_back(&test);
+  }
+  if (tests.empty()) return;
+  out << "<h2 id=\"expected-mismatches\">Known mismatches detected (" << tests.size() << ")</h2>\n"
+      << "<p>These scenes are marked <code>expect_fail</code>: a correct implementation must fail their "
+         "comparison. They pass because it did; below is by how much.</p>\n";
+  for (const Json* test : tests) attentionSection(out, page, *test);
+}
+
 void allTestsTable(std::ostream& out, const Page& page) {
   const Json& tests = arrayField(page.results, "tests");
   out << "<h2 id=\"tests\">All tests (" << tests.size() << ")</h2>\n<table>\n<tr><th>test</th><th>verdict</th>"

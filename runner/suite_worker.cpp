@@ -1,6 +1,7 @@
 #include "runner/suite_worker.h"
 
 #include "backends/expected_driver.h"
+#include "baking/bake.h"
 #include "comparison/comparison_report.h"
 #include "conformance/scene_check.h"
 #include "lighting/scene_loader.h"
@@ -159,7 +160,7 @@ class Worker {
   conformance::SceneReferences& referencesOf(const std::string& scene) {
     auto it = references_.find(scene);
     if (it == references_.end()) {
-      auto prepared = lighting::prepareScene(lighting::loadSceneFile(scene));
+      auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(scene));
       it = references_.emplace(scene, std::make_unique<conformance::SceneReferences>(std::move(prepared))).first;
     }
     return *it->second;
@@ -167,7 +168,9 @@ class Worker {
 
   void runTask(const WorkerTask& task, Json& result) {
     conformance::SceneReferences& references = referencesOf(task.scene);
-    const conformance::SceneCheck check = conformance::checkScene(references, *backend_);
+    conformance::CheckOptions options;
+    options.mutant = *shaders::mutantFromName(task.mutant);  // checked by ensureBackend
+    const conformance::SceneCheck check = conformance::checkScene(references, *backend_, options);
     const std::string verdict(comparison::verdictName(check.verdict));
     result["raw_verdict"] = verdict;
     result["message"] = "";
@@ -178,9 +181,12 @@ class Worker {
     result["timings_ms"] = {{"reference", t.reference}, {"pipeline", t.pipeline}, {"draw", t.draw},
                             {"readback", t.readback},   {"compare", t.compare},   {"total", t.total}};
     result["evidence"] = nullptr;
-    if (check.verdict == comparison::Verdict::Pass) return;
-    // Every failing test leaves evidence; a mutant leaves it for its first kill.
+    // Every failing test leaves evidence; a mutant leaves it for its first
+    // kill; an expect_fail scene whose known mismatch was detected leaves it
+    // too, so the report shows how far off that mismatch is.
     const bool isMutant = task.mutant != "none";
+    const bool detectedMismatch = !isMutant && references.prepared()->scene.expect.expectFail;
+    if (check.verdict == comparison::Verdict::Pass && !detectedMismatch) return;
     if (isMutant && !evidencedMutants_.insert(task.mutant).second) return;
     const std::string dir =
         isMutant ? mutantEvidenceDir(task.mutant, plan_.combination.suffix) : testEvidenceDir(task.test);

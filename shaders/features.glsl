@@ -18,5 +18,7 @@ layout(constant_id = 6) const bool AMBIENT = true;
 // Test only: a deliberately wrong variant of the model (mutants.glsl). 0, the
 // model itself, is the only value a shipped pipeline uses.
 layout(constant_id = 7) const int MUTANT = 0;
+// Baked light: the object's lightmap is sampled and added (SPEC 3.6).
+layout(constant_id = 8) const bool LIGHTMAP = true;
 
 #endif

@@ -7,6 +7,13 @@
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) in vec3 vVertexLighting;
+layout(location = 3) in vec2 vLightmapUv;
+
+// The object's baked maps (SPEC 3.6), float textures with LINEAR filtering and
+// clamp to edge. Objects without maps get a 1x1 texture and flags of 0. The
+// OpenGL backend binds them by name (GLSL 330 has no binding qualifiers).
+layout(set = 1, binding = 0) uniform sampler2D lightmapTexture;
+layout(set = 1, binding = 1) uniform sampler2D shadowMaskTexture;
 
 layout(location = 0) out vec4 outColor;
 
@@ -16,11 +23,13 @@ const int kLegacyPixelLights = 4;
 void main() {
   vec3 p = vPosition;
   vec3 N = normalize(vNormal);
-  // Shadow mask at this fragment; sampled from the object's map once baked
-  // lighting exists, all ones until then.
+  // The shadow mask at this fragment (SPEC 3.5): all ones on objects without one.
   vec4 mask = vec4(1.0);
+  if (SHADOW_MASK && objectData.lightList.z != 0) mask = texture(shadowMaskTexture, vLightmapUv);
   vec3 light = vec3(0.0);
   if (AMBIENT) light += frameData.ambient.rgb;
+  // Baked light (SPEC 3.6): the lightmap's irradiance, times albedo below.
+  if (LIGHTMAP && objectData.lightList.y != 0) light += texture(lightmapTexture, vLightmapUv).rgb;
   // srp keeps directional lights apart and applies them to every object; the
   // legacy profile packs them with the others.
   if (DIRECTIONAL_LIGHTS && !legacyProfile())

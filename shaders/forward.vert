@@ -14,6 +14,7 @@ layout(location = 1) in vec3 inNormal;
 layout(location = 0) out vec3 vPosition;  // camera-relative world position (absolute in the absolute-coordinates mutant)
 layout(location = 1) out vec3 vNormal;
 layout(location = 2) out vec3 vVertexLighting;
+layout(location = 3) out vec2 vLightmapUv;  // SPEC 3.6: u = x_local / sx + 0.5, v = z_local / sz + 0.5
 
 const int kLegacyPixelLights = 4;
 const int kMaxLightsPerObject = 8;
@@ -26,6 +27,8 @@ void main() {
   vPosition = worldPosition;
   vNormal = N;
   vVertexLighting = vec3(0.0);
+  // Affine in the local position, so interpolating it is exact.
+  vLightmapUv = inPosition.xz * objectData.lightmapTransform.xy + objectData.lightmapTransform.zw;
   if (legacyProfile()) {
     int count = min(objectData.lightList.x, kMaxLightsPerObject);
     if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) count = objectData.lightList.x;

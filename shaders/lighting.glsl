@@ -57,7 +57,9 @@ float shadowMaskAttenuation(Light light, vec4 mask) {
   if (!SHADOW_MASK || objectData.lightList.z == 0) return 1.0;
   int channel = int(light.spotAngles.z);
   if (channel < 0) return 1.0;
-  return mix(1.0, mask[channel], light.spotAngles.w);
+  if (MUTANT == MUTANT_SHADOW_MASK_CHANNEL_OFF_BY_ONE) channel = (channel + 1) % 4;
+  float strength = MUTANT == MUTANT_SHADOW_STRENGTH_IGNORED ? 1.0 : light.spotAngles.w;
+  return mix(1.0, mask[channel], strength);
 }
 
 // SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask (albedo applied by the caller).

@@ -20,5 +20,9 @@ const int MUTANT_DIRECTIONAL_NOT_SATURATED = 9;   // directional dot(N, L) not c
 const int MUTANT_SPOT_DIRECTION_FLIPPED = 10;     // spotDir = direction, not -direction
 const int MUTANT_LOCAL_NOT_SATURATED = 11;        // point and spot dot(N, L) not clamped at 0
 const int MUTANT_LEGACY_VERTEX_LIGHTS_DROPPED = 12;  // legacy list positions 4-7 never lit
+const int MUTANT_SHADOW_MASK_CHANNEL_OFF_BY_ONE = 13;  // a mixed light reads mask channel (c + 1) mod 4
+const int MUTANT_SHADOW_STRENGTH_IGNORED = 14;        // shadowMask = mask[c], as if every strength were 1
+// 15 (demoted-light-still-lit) and 16 (legacy-falloff-baked) change the data
+// the CPU hands over, not the shader (conformance/cpu_mutants.h).
 
 #endif

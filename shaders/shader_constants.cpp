@@ -14,6 +14,7 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kVertexLights] = all || f.vertexLights;
   v[kShadowMask] = all || f.shadowMask;
   v[kAmbient] = all || f.ambient;
+  v[kLightmap] = all || f.lightmap;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   return v;
 }

@@ -19,7 +19,8 @@ enum ConstantId : std::uint32_t {
   kShadowMask = 5,
   kAmbient = 6,
   kMutant = 7,
-  kConstantCount = 8,
+  kLightmap = 8,
+  kConstantCount = 9,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

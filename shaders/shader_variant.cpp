@@ -25,6 +25,14 @@ const std::vector<MutantName>& mutantNames() {
        "point and spot lights use dot(N, L) without clamping it at 0 (SPEC 3.2)"},
       {Mutant::LegacyVertexLightsDropped, "legacy-vertex-lights-dropped",
        "the legacy profile lights only list positions 0-3, never the vertex lights 4-7 (SPEC 4)"},
+      {Mutant::ShadowMaskChannelOffByOne, "shadow-mask-channel-off-by-one",
+       "a mixed light reads shadow-mask channel (c + 1) mod 4 instead of its own channel c (SPEC 3.5)"},
+      {Mutant::ShadowStrengthIgnored, "shadow-strength-ignored",
+       "the shadow mask applies in full, mask[c] instead of lerp(1, mask[c], strength) (SPEC 3.5)"},
+      {Mutant::DemotedLightStillLit, "demoted-light-still-lit",
+       "a mixed light demoted in SPEC 5.3 is lit in real time as well as baked"},
+      {Mutant::LegacyFalloffBaked, "legacy-falloff-baked",
+       "lights with bake_falloff inverse_squared are baked with the legacy falloff (SPEC 3.6)"},
   };
   return names;
 }

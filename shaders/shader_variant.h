@@ -28,6 +28,12 @@ enum class Mutant : int {
   SpotDirectionFlipped = 10,     // spotDir = direction instead of -direction (SPEC 3.2)
   LocalNotSaturated = 11,        // point and spot dot(N, L) not clamped at 0 (SPEC 3.2)
   LegacyVertexLightsDropped = 12,  // legacy list positions 4-7 (vertex lights) never lit (SPEC 4)
+  ShadowMaskChannelOffByOne = 13,  // a mixed light reads shadow-mask channel (c + 1) mod 4 (SPEC 3.5)
+  ShadowStrengthIgnored = 14,      // shadowMask = mask[c], whatever the strength (SPEC 3.5)
+  // CPU mutants: the shader is the model's; the data handed to the backend is
+  // wrong (conformance/cpu_mutants.h).
+  DemotedLightStillLit = 15,       // a demoted mixed light is packed and lit in real time besides its bake (SPEC 5.3)
+  LegacyFalloffBaked = 16,         // lights with inverse_squared bake_falloff baked with the legacy falloff (SPEC 3.6)
 };
 
 struct MutantName {

@@ -20,7 +20,11 @@ set(mutant_killers
   "directional-not-saturated=attenuation/directional-grazing.json"
   "spot-direction-flipped=attenuation/spot-inner-outer-edges.json"
   "local-not-saturated=legacy/four-pixel-four-vertex.json,attenuation/point-d-zero.json"
-  "legacy-vertex-lights-dropped=legacy/four-pixel-four-vertex.json")
+  "legacy-vertex-lights-dropped=legacy/four-pixel-four-vertex.json"
+  "shadow-mask-channel-off-by-one=shadowmask/four-overlapping-mixed.json,shadowmask/far-apart-share-channel.json"
+  "shadow-strength-ignored=shadowmask/strength-0-half-1.json"
+  "demoted-light-still-lit=shadowmask/fifth-overlapping-demoted.json"
+  "legacy-falloff-baked=baked/spot-directional-no-range.json,baked/shadows-box-on-plane.json")
 foreach(entry ${mutant_killers})
   string(REPLACE "=" ";" mutant_parts ${entry})
   list(GET mutant_parts 0 mutant)

@@ -73,6 +73,14 @@ GlName ForwardPrograms::build(const shaders::ConstantValues& constants) const {
   if (frameBlock != GL_INVALID_INDEX) gl_.glUniformBlockBinding(program.get(), frameBlock, kFrameBlockBinding);
   const GLuint objectBlock = gl_.glGetUniformBlockIndex(program.get(), "ObjectBlock");
   if (objectBlock != GL_INVALID_INDEX) gl_.glUniformBlockBinding(program.get(), objectBlock, kObjectBlockBinding);
+  // GLSL 330 has no binding qualifiers: the samplers get their units here,
+  // once. A sampler the specialised shader does not use has location -1.
+  gl_.glUseProgram(program.get());
+  const GLint lightmap = gl_.glGetUniformLocation(program.get(), "lightmapTexture");
+  if (lightmap != -1) gl_.glUniform1i(lightmap, kLightmapTextureUnit);
+  const GLint shadowMask = gl_.glGetUniformLocation(program.get(), "shadowMaskTexture");
+  if (shadowMask != -1) gl_.glUniform1i(shadowMask, kShadowMaskTextureUnit);
+  gl_.glUseProgram(0);
   gl_.check("linking the forward program");
   return program;
 }

@@ -2,7 +2,8 @@
 // Vulkan SPIR-V (shaders/embedded_spirv.h), with each specialization
 // constant defined as the SPIRV_CROSS_CONSTANT_ID_n macro it became. One
 // program per set of constants, linked on first use; the uniform blocks are
-// bound by name to the bindings the Vulkan layout uses (0 frame, 1 object).
+// bound by name to the bindings the Vulkan layout uses (0 frame, 1 object),
+// and the baked maps' samplers to texture units 0 (lightmap) and 1 (mask).
 #pragma once
 
 #include "backends/gl/gl_objects.h"
@@ -14,6 +15,8 @@ namespace backends::gl {
 
 constexpr GLuint kFrameBlockBinding = 0;
 constexpr GLuint kObjectBlockBinding = 1;
+constexpr GLint kLightmapTextureUnit = 0;
+constexpr GLint kShadowMaskTextureUnit = 1;
 
 class ForwardPrograms {
  public:

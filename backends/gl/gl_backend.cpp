@@ -1,5 +1,6 @@
 #include "backends/gl/gl_backend.h"
 
+#include "backends/gl/baked_textures.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/gl_context.h"
 #include "backends/gl/gl_objects.h"
@@ -25,9 +26,10 @@ std::string glString(const GlFunctions& gl, GLenum name) {
 }
 
 // The renderer: an FBO with an RGBA32F colour and a 32-bit float depth
-// renderbuffer, the scene's geometry in one vertex and one index buffer, and
-// two uniform buffers (the frame block; the object blocks at the driver's
-// offset alignment, bound per draw with glBindBufferRange).
+// renderbuffer, the scene's geometry in one vertex and one index buffer, two
+// uniform buffers (the frame block; the object blocks at the driver's offset
+// alignment, bound per draw with glBindBufferRange), and the baked maps as
+// textures (baked_textures.h), bound per draw.
 class GlBackend final : public Backend {
  public:
   GlBackend(const ContextFactory& makeContext, const BackendOptions& options)
@@ -43,6 +45,7 @@ class GlBackend final : public Backend {
       throw NotSupportedError("asked for Mesa's " + wanted + " but the context runs on '" + info_.name +
                               "' (the driver is missing, or another was already loaded in this process)");
     programs_.emplace(gl_);
+    bakedTextures_.emplace(gl_);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
     // its counter 0 bits: it then has no clock, and draws are not timed.
     GLint timerBits = 0;
@@ -74,6 +77,7 @@ class GlBackend final : public Backend {
     const GLuint program = programs_->program(shaders::constantValues(frame.features, options_.variant));
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     ensureGeometry(frame);
+    bakedTextures_->update(*frame.prepared);  // before the timed draws: uploads are not drawing
     writeUniforms(frame);
 
     gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
@@ -110,6 +114,7 @@ class GlBackend final : public Backend {
       if (range.indexCount == 0) continue;
       gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kObjectBlockBinding, objectUniforms_.get(),
                             GLintptr(o * objectStride_), sizeof(lighting::GpuObjectBlock));
+      bakedTextures_->bind(int(o));
       gl_.glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
                                    reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)),
                                    range.vertexOffset);
@@ -234,6 +239,7 @@ class GlBackend final : public Backend {
   std::unique_ptr<GlContext> context_;  // first in, last out: GL objects below die while it is current
   GlFunctions gl_;
   std::optional<ForwardPrograms> programs_;
+  std::optional<BakedTextures> bakedTextures_;
   GlName color_, depth_, framebuffer_;
   GlName vertexArray_, vertices_, indices_;
   GlName frameUniforms_, objectUniforms_;

@@ -27,6 +27,9 @@ GlFunctions GlFunctions::load(const std::function<void*(const char*)>& getProcAd
   if (!f.name) throw NotSupportedError("the GL context has no " #name);
   LIGHTCTS_GL_FUNCTIONS(LIGHTCTS_GL_LOAD)
 #undef LIGHTCTS_GL_LOAD
+#define LIGHTCTS_GL_LOAD_OPTIONAL(type, name) f.name = reinterpret_cast<type>(getProcAddress(#name));
+  LIGHTCTS_GL_OPTIONAL_FUNCTIONS(LIGHTCTS_GL_LOAD_OPTIONAL)
+#undef LIGHTCTS_GL_LOAD_OPTIONAL
   return f;
 }
 

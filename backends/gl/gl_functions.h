@@ -69,14 +69,30 @@ namespace backends::gl {
   X(PFNGLGETQUERYIVPROC, glGetQueryiv)                             \
   X(PFNGLBEGINQUERYPROC, glBeginQuery)                             \
   X(PFNGLENDQUERYPROC, glEndQuery)                                 \
-  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)
+  X(PFNGLGETQUERYOBJECTUI64VPROC, glGetQueryObjectui64v)           \
+  X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)             \
+  X(PFNGLUNIFORM1IPROC, glUniform1i)                               \
+  X(PFNGLGENTEXTURESPROC, glGenTextures)                           \
+  X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                     \
+  X(PFNGLBINDTEXTUREPROC, glBindTexture)                           \
+  X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                       \
+  X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                             \
+  X(PFNGLTEXPARAMETERIPROC, glTexParameteri)
+
+// Entry points of later GL versions than the 3.3 the backend needs: null when
+// the library has none. Mesa hands out a pointer for every name it knows,
+// whatever the context's version, so callers check the version before use.
+// glGetInternalformativ: GL 4.2; its GL_FILTER query: GL 4.3.
+#define LIGHTCTS_GL_OPTIONAL_FUNCTIONS(X) X(PFNGLGETINTERNALFORMATIVPROC, glGetInternalformativ)
 
 struct GlFunctions {
 #define LIGHTCTS_GL_MEMBER(type, name) type name = nullptr;
   LIGHTCTS_GL_FUNCTIONS(LIGHTCTS_GL_MEMBER)
+  LIGHTCTS_GL_OPTIONAL_FUNCTIONS(LIGHTCTS_GL_MEMBER)
 #undef LIGHTCTS_GL_MEMBER
 
-  // Fills every pointer; throws NotSupportedError naming the first missing one.
+  // Fills every pointer; throws NotSupportedError naming the first missing
+  // required one (optional ones may stay null).
   static GlFunctions load(const std::function<void*(const char*)>& getProcAddress);
 
   // Throws DriverError naming `when` and the GL error, if glGetError has one.

@@ -33,4 +33,8 @@ GlName makeQuery(const GlFunctions& gl) {
   return makeName(gl, &GlFunctions::glGenQueries, &GlFunctions::glDeleteQueries);
 }
 
+GlName makeTexture(const GlFunctions& gl) {
+  return makeName(gl, &GlFunctions::glGenTextures, &GlFunctions::glDeleteTextures);
+}
+
 }  // namespace backends::gl

@@ -44,5 +44,6 @@ GlName makeVertexArray(const GlFunctions& gl);
 GlName makeFramebuffer(const GlFunctions& gl);
 GlName makeRenderbuffer(const GlFunctions& gl);
 GlName makeQuery(const GlFunctions& gl);
+GlName makeTexture(const GlFunctions& gl);
 
 }  // namespace backends::gl

@@ -23,6 +23,7 @@
 //    channel, floor as derived at kAbsoluteFloorUlps below.
 #include "backends/backend.h"
 #include "backends/tests/backend_combinations.h"
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "testing/independent_plane/independent_plane_model.h"
@@ -169,7 +170,7 @@ std::shared_ptr<const lighting::PreparedScene> loadThroughFile(const SceneSpec& 
     throw;
   }
   std::filesystem::remove(path);
-  return lighting::prepareScene(std::move(scene));
+  return baking::prepareBakedScene(std::move(scene));
 }
 
 // Renders the case on one backend and driver and compares; a skip when that

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "backends/backend.h"
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "reference/reference_renderer.h"
@@ -31,7 +32,7 @@ inline int forEachSuiteScene(const std::filesystem::path& scenesDir, Backend& fi
       if (file.path().extension() == ".json") files.push_back(file.path());
   std::sort(files.begin(), files.end());
   for (const std::filesystem::path& file : files) {
-    const auto prepared = lighting::prepareScene(lighting::loadSceneFile(file.string()));
+    const auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(file.string()));
     const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
     check({file, first.render(frame), second.render(frame), reference::ReferenceRenderer(prepared).render(frame)});
   }

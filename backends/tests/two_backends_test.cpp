@@ -6,6 +6,7 @@
 // the same driver must give the same pixels.
 #include "backends/backend.h"
 #include "backends/tests/backend_combinations.h"
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 
@@ -26,7 +27,7 @@ TEST_P(TwoBackends, EachDrawsInItsOwnContextWhileTheOtherLivesAndDies) {
   std::string whyNot;
   auto first = backends::testing::createOrNull(GetParam(), whyNot);
   if (!first) GTEST_SKIP() << whyNot;
-  const lighting::Frame frame = lighting::prepareFrame(lighting::prepareScene(lighting::loadSceneFile(kScene)), 0);
+  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(lighting::loadSceneFile(kScene)), 0);
   const imaging::Image before = first->render(frame);
 
   auto second = backends::testing::createOrNull(GetParam(), whyNot);

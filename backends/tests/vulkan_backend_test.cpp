@@ -5,6 +5,7 @@
 #include "backends/tests/suite_scene_renders.h"
 #include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/vulkan_device.h"
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "reference/reference_renderer.h"
@@ -108,7 +109,7 @@ constexpr const char* kQuadrantScene = R"({
 TEST(VulkanReadback, RowZeroIsTheTopAndColumnZeroTheLeft) {
   auto backend = createOrSkip();
   if (!backend) GTEST_SKIP() << "no Vulkan device";
-  const auto prepared = lighting::prepareScene(lighting::loadSceneText(kQuadrantScene, "quadrant.json"));
+  const auto prepared = baking::prepareBakedScene(lighting::loadSceneText(kQuadrantScene, "quadrant.json"));
   const imaging::Image image = backend->render(lighting::prepareFrame(prepared, 0));
   ASSERT_EQ(image.width, 16);
   ASSERT_EQ(image.height, 8);

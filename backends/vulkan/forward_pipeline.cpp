@@ -1,5 +1,6 @@
 #include "backends/vulkan/forward_pipeline.h"
 
+#include "backends/vulkan/baked_textures.h"
 #include "lighting/gpu_packing.h"
 #include "shaders/embedded_spirv.h"
 
@@ -23,9 +24,12 @@ ForwardPipelines::ForwardPipelines(const VulkanDevice& device, const PipelineCac
   }};
   setLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
-  const vk::DescriptorSetLayout setLayout = *setLayout_;
-  layout_ = vk::raii::PipelineLayout(device.device,
-                                     vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &setLayout});
+  // Set 1 is in every pipeline's layout: the fragment stage's SPIR-V declares
+  // the map samplers whatever the LIGHTMAP and SHADOW_MASK constants say.
+  mapsSetLayout_ = createBakedMapsSetLayout(device.device);
+  const std::array<vk::DescriptorSetLayout, 2> setLayouts{*setLayout_, *mapsSetLayout_};
+  layout_ = vk::raii::PipelineLayout(
+      device.device, vk::PipelineLayoutCreateInfo{.setLayoutCount = setLayouts.size(), .pSetLayouts = setLayouts.data()});
   vertex_ = shaderModule(device.device, shaders::forwardVertexSpirv());
   fragment_ = shaderModule(device.device, shaders::forwardFragmentSpirv());
 }

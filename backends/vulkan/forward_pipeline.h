@@ -1,5 +1,6 @@
-// The forward pipeline: one descriptor layout (binding 0: the frame block,
-// binding 1: the object block with a dynamic offset per draw), the embedded
+// The forward pipeline: two descriptor set layouts (set 0, binding 0: the
+// frame block, binding 1: the object block with a dynamic offset per draw;
+// set 1: the object's baked maps, baked_textures.h), the embedded
 // SPIR-V stages, and one pipeline per set of specialization constants, built
 // on first use through the on-disk pipeline cache.
 #pragma once
@@ -20,6 +21,7 @@ class ForwardPipelines {
   ForwardPipelines(const VulkanDevice& device, const PipelineCacheFile& cache);
 
   const vk::raii::DescriptorSetLayout& setLayout() const { return setLayout_; }
+  const vk::raii::DescriptorSetLayout& mapsSetLayout() const { return mapsSetLayout_; }
   const vk::raii::PipelineLayout& layout() const { return layout_; }
   bool contains(const shaders::ConstantValues& constants) const { return pipelines_.contains(constants); }
   // The pipeline specialised with `constants`, created (and the cache file
@@ -32,6 +34,7 @@ class ForwardPipelines {
   const VulkanDevice& device_;
   const PipelineCacheFile& cache_;
   vk::raii::DescriptorSetLayout setLayout_{nullptr};
+  vk::raii::DescriptorSetLayout mapsSetLayout_{nullptr};
   vk::raii::PipelineLayout layout_{nullptr};
   vk::raii::ShaderModule vertex_{nullptr};
   vk::raii::ShaderModule fragment_{nullptr};

@@ -1,5 +1,6 @@
 #include "backends/vulkan/vulkan_backend.h"
 
+#include "backends/vulkan/baked_textures.h"
 #include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/forward_pipeline.h"
 #include "backends/vulkan/frame_resources.h"
@@ -25,7 +26,8 @@ class VulkanBackend final : public Backend {
         instance_(options.validation),
         device_(instance_, options.device),
         cache_(device_),
-        pipelines_(device_, cache_) {
+        pipelines_(device_, cache_),
+        mapDefaults_(device_, pipelines_.mapsSetLayout()) {
     pool_ = vk::raii::CommandPool(device_.device,
                                   vk::CommandPoolCreateInfo{.flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                             .queueFamilyIndex = device_.queueFamily});
@@ -57,6 +59,13 @@ class VulkanBackend final : public Backend {
     if (!geometry_ || geometry_->prepared != frame.prepared) {
       geometry_.reset();
       geometry_.emplace(device_, frame.prepared, packGeometry(*frame.prepared));
+    }
+    // The maps are uploaded once per prepared scene and bake; a CPU mutant
+    // that swaps the bake hands over a new one.
+    if (!maps_ || !maps_->isFor(*frame.prepared)) {
+      maps_.reset();
+      maps_.emplace(device_, mapDefaults_, pipelines_.mapsSetLayout(), frame.prepared);
+      checkValidation("uploading the baked maps of " + frame.scene().sourcePath);
     }
     const std::size_t objectCount = frame.scene().objects.size();
     if (!uniforms_ || uniforms_->objectCapacity() < objectCount) {
@@ -152,6 +161,8 @@ class VulkanBackend final : public Backend {
       if (range.indexCount == 0) continue;
       cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 0,
                             {*uniforms_->descriptorSet()}, {uniforms_->objectOffset(o)});
+      // Every object binds set 1, maps or not: the shader declares it.
+      cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 1, {maps_->set(o)}, {});
       cb.drawIndexed(range.indexCount, 1, range.firstIndex, range.vertexOffset, 0);
     }
     cb.endRendering();
@@ -181,11 +192,13 @@ class VulkanBackend final : public Backend {
   VulkanDevice device_;
   PipelineCacheFile cache_;
   ForwardPipelines pipelines_;
+  BakedMapDefaults mapDefaults_;
   vk::raii::CommandPool pool_{nullptr};
   vk::raii::CommandBuffer commands_{nullptr};
   vk::raii::Fence fence_{nullptr};
   std::optional<RenderTarget> target_;
   std::optional<SceneGeometry> geometry_;
+  std::optional<SceneBakedTextures> maps_;
   std::optional<UniformBuffers> uniforms_;
   std::optional<DrawTimestamps> timestamps_;  // empty when the queue writes no timestamps
   std::optional<double> lastDrawMilliseconds_;

@@ -1,7 +1,8 @@
 // The Vulkan backend (SPEC 8 `vulkan`): headless, on any Vulkan 1.3 device.
 // draw() records the forward pass into an offscreen RGBA32F colour target
 // with a D32 depth buffer and waits for it; readback() copies the colour
-// target into a host-visible staging buffer (readback.cpp).
+// target into a host-visible staging buffer (readback.cpp). The baked maps of
+// a scene are uploaded on its first draw (baked_textures.h).
 #pragma once
 
 #include "backends/backend.h"

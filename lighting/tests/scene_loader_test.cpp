@@ -146,6 +146,7 @@ TEST(SceneLoader, MinimalSceneGetsEveryDefaultOfTheSpecExample) {
   EXPECT_EQ(scene.expect.toleranceScale, 1);
   EXPECT_EQ(scene.expect.maxFailingPixels, 0);
   EXPECT_FALSE(scene.expect.expectFail);
+  EXPECT_EQ(scene.expect.against, CompareAgainst::Reference);
 }
 
 TEST(SceneLoader, SpecExampleLoadsWithTheValuesWritten) {
@@ -204,7 +205,7 @@ TEST(SceneLoader, EveryKeyWithAValueOtherThanItsDefault) {
     ],
     "frames": {"count": 3, "camera_path": [{"position": [0, 1, 5], "target": [0, 0, 0]},
                                            {"position": [5, 1, 0], "target": [1, 0, 0]}]},
-    "expect": {"tolerance_scale": 2.5, "max_failing_pixels": 7, "expect_fail": true}
+    "expect": {"tolerance_scale": 2.5, "max_failing_pixels": 7, "expect_fail": true, "against": "realtime"}
   })",
                                     "ignored-stem.json");
 
@@ -273,6 +274,31 @@ TEST(SceneLoader, EveryKeyWithAValueOtherThanItsDefault) {
   EXPECT_EQ(scene.expect.toleranceScale, 2.5);
   EXPECT_EQ(scene.expect.maxFailingPixels, 7);
   EXPECT_TRUE(scene.expect.expectFail);
+  EXPECT_EQ(scene.expect.against, CompareAgainst::Realtime);
+}
+
+// `expect.against` is an extension of SPEC 2 (docs/scene-format.md).
+TEST(SceneLoader, ExpectAgainstReferenceOrRealtime) {
+  const std::string head = R"({"lightcts": 1, "image": {}, "camera": {}, "objects": [], "lights": [], "expect": )";
+  EXPECT_EQ(loadSceneText(head + R"({"against": "reference"}})", "scene.json").expect.against,
+            CompareAgainst::Reference);
+  EXPECT_EQ(loadSceneText(head + R"({"against": "realtime"}})", "scene.json").expect.against,
+            CompareAgainst::Realtime);
+  EXPECT_EQ(loadSceneText(head + "{}}", "scene.json").expect.against, CompareAgainst::Reference);
+}
+
+TEST(SceneLoaderError, ExpectAgainstOtherValuesAreRejectedWithTheirPath) {
+  // Line 2 is ` "expect": {"against": ` (23 characters): the value starts at column 24.
+  const std::string head = "{\"lightcts\": 1, \"image\": {}, \"camera\": {}, \"objects\": [], \"lights\": [],\n"
+                           " \"expect\": {\"against\": ";
+  expectError(head + "\"baked\"}}", "/expect/against", 2, 24,
+              "expected one of: reference, realtime; got 'baked'");
+  expectError(head + "\"Realtime\"}}", "/expect/against", 2, 24,
+              "expected one of: reference, realtime; got 'Realtime'");
+  expectError(head + "1}}", "/expect/against", 2, 24, "expected one of: reference, realtime; got a number");
+  // An unknown key next to it still lists the allowed ones, `against` included.
+  expectError(head + "\"realtime\", \"agianst\": 1}}", "/expect/agianst", 2, 36,
+              "expected one of: tolerance_scale, max_failing_pixels, expect_fail, against");
 }
 
 TEST(SceneLoader, DirectionIsNormalised) {

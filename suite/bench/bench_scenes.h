@@ -2,7 +2,9 @@
 // field of floor tiles seen from straight above with point lights over it,
 // sized so every pixel is covered and every light is in view. The 1280x720
 // 64-light field (`lights64-1280x720`) and the cost curves (`curve-lights`,
-// `curve-resolution`, `curve-objects`) are all this one generator.
+// `curve-resolution`, `curve-objects`) are all this one generator. The
+// lightmap scene (`lightmap-1280x720`, SPEC 9's baked lightmaps at several
+// resolutions) is a second one: one lightmapped plane under a few point lights.
 #pragma once
 
 #include "lighting/scene.h"
@@ -37,6 +39,27 @@ struct FieldSpec {
 // The scene of `spec` (the mode's profile and lists set; the shader variant
 // is the backend's business).
 lighting::Scene fieldScene(const FieldSpec& spec, const std::string& name);
+
+// `lightmap-1280x720`: one static plane filling the view (12.8 x 7.2, seen
+// from straight above) with lightmap_resolution `resolution`, under five
+// point lights of inverse-squared bake falloff, 0.4 to 1.2 above it (low
+// lights make sharp pools, the detail a coarse map loses), and a black box
+// (albedo 0, so it looks the same baked or not). With `shadows` the highest
+// light has `shadows` and the box casts its shadow on the plane. `baked`: the lights are `baked` (the plane's
+// lightmap holds them; nothing is lit in real time); else `realtime`, the
+// same lights lit per pixel, and the plane has no lightmap: the error
+// baseline of the lightmap modes.
+struct LightmapSpec {
+  int width = 1280, height = 720;
+  int resolution = 64;
+  bool baked = true;
+  bool shadows = false;  // the shadowed light (false: every light unshadowed)
+};
+
+lighting::Scene lightmapScene(const LightmapSpec& spec, const std::string& name);
+
+// The resolutions of the `lightmap-N` modes: 16, 32, ... 512.
+inline constexpr int kLightmapResolutions[] = {16, 32, 64, 128, 256, 512};
 
 // A light grid of `count` lights (1, 2, 4, ... powers of two): columns >= rows.
 void lightGridFor(int count, int& columns, int& rows);

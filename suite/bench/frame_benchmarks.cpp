@@ -9,6 +9,10 @@
 //   frame/<b>/curve-resolution/all-lights/<WxH>   256x256, 640x360, 1280x720, 1920x1080, 64 lights
 //   frame/<b>/curve-objects/all-lights/<n>        n = 1, 4, 16, 64, 256 tiles, 64 lights, 640x360
 //   frame/<b>/<group>.<name>/<mode>               with --suite_scenes: every suite scene, frame 0
+//   frame/<b>/lightmap-1280x720/lightmap-<n>      the plane's lightmap at n = 16 ... 512 texels a side,
+//                                                with bake_ms; error against the lights in real time
+//   frame/<b>/lightmap-1280x720/realtime          the same lights in real time
+//   frame/<b>/lightmap-shadow-1280x720/<mode>     the same with one shadowed light: realtime, lightmap-64, -512
 // softpipe (about 150 times slower than llvmpipe) runs a scaled-down set: the
 // 64-light field in five modes (not full-shader all-lights), `frame` only, one iteration
 // times 3 repetitions, and the curves at 256x144 (resolution: 128x72 to
@@ -16,6 +20,7 @@
 #include "suite/bench/frame_benchmarks.h"
 
 #include "backends/backend.h"
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "reference/bvh.h"
@@ -35,6 +40,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -118,12 +124,19 @@ struct BenchFrame {
   bool fullShader = false;   // draw with ShaderVariant::specialised = false
   std::string referenceKey;  // the cached ideal reference it is compared with; empty: no error counters
   std::string errorKey;      // the cached error (frame and frame_readback share it)
+  // The scene whose ideal reference is the error's baseline when it is not
+  // this one (the lightmap modes: the same lights in real time); null: this one.
+  std::shared_ptr<const PreparedScene> referencePrepared;
+  // The lightmap modes: the median time of a fresh bake (no cache) and how
+  // many bakes it is the median of.
+  std::optional<double> bakeMs;
+  int bakeRuns = 0;
 };
 
 std::shared_ptr<const BenchFrame> makeBenchFrame(Scene scene, bool fullShader, std::string referenceKey,
                                                  std::string errorKey) {
   auto bench = std::make_shared<BenchFrame>();
-  bench->prepared = prepareScene(std::move(scene));
+  bench->prepared = baking::prepareBakedScene(std::move(scene));  // suite scenes may have lightmaps
   bench->frame = prepareFrame(bench->prepared, 0);
   bench->load = loadOf(bench->frame);
   bench->fullShader = fullShader;
@@ -163,9 +176,15 @@ struct Run {
   const imaging::Image& idealFor(const BenchFrame& bench) {
     auto it = ideal.find(bench.referenceKey);
     if (it == ideal.end()) {
-      const reference::ReferenceRenderer renderer(bench.prepared);
-      it = ideal.emplace(bench.referenceKey, renderer.render(bench.frame, reference::ReferenceOptions{.ideal = true}).value)
-               .first;
+      const reference::ReferenceOptions idealOptions{.ideal = true};
+      if (bench.referencePrepared) {
+        const reference::ReferenceRenderer renderer(bench.referencePrepared);
+        const Frame frame = prepareFrame(bench.referencePrepared, bench.frame.index);
+        it = ideal.emplace(bench.referenceKey, renderer.render(frame, idealOptions).value).first;
+      } else {
+        const reference::ReferenceRenderer renderer(bench.prepared);
+        it = ideal.emplace(bench.referenceKey, renderer.render(bench.frame, idealOptions).value).first;
+      }
     }
     return it->second;
   }
@@ -247,6 +266,12 @@ void runFrame(benchmark::State& state, Run& run, const BenchFrame& bench, bool w
       c["err_psnr_db"] = e.psnrDb;
       c["err_perceptual_fail"] = e.perceptualFail;
     }
+    if (bench.bakeMs) {
+      c["bake_ms"] = *bench.bakeMs;
+      c["bake_runs"] = double(bench.bakeRuns);
+      c["lightmap_texels"] = double(bench.frame.scene().objects.front().lightmapResolution) *
+                             double(bench.frame.scene().objects.front().lightmapResolution);
+    }
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
   }
@@ -315,6 +340,27 @@ class Registrar {
     configure(benchmark::RegisterBenchmark(name.c_str(),
                                            [run, bench, withReadback](benchmark::State& st) {
                                              runFrame(st, *run, *bench, withReadback);
+                                           }),
+              frameTiming_);
+  }
+
+  // A frame benchmark whose scene is made on its first run, not here: the
+  // lightmap modes bake (several times) and trace their load only when the
+  // filter selects them, so the smoke tests do not pay for every resolution.
+  using MakeBench = std::function<std::shared_ptr<const BenchFrame>()>;
+  void lazyFrame(const std::string& scene, const std::string& mode, MakeBench make) {
+    const std::string name = "frame/" + run_->suffix + "/" + scene + "/" + mode;
+    auto run = run_;
+    auto made = std::make_shared<std::shared_ptr<const BenchFrame>>();
+    configure(benchmark::RegisterBenchmark(name.c_str(),
+                                           [run, made, make = std::move(make)](benchmark::State& st) {
+                                             try {
+                                               if (!*made) *made = make();
+                                             } catch (const std::exception& e) {
+                                               st.SkipWithError(e.what());
+                                               return;
+                                             }
+                                             runFrame(st, *run, **made, false);
                                            }),
               frameTiming_);
   }
@@ -391,6 +437,97 @@ void registerModes(Registrar& r, const std::vector<std::pair<std::string, std::s
     r.frame("lights64-1280x720", mode, "", bench, false);
     if (!r.run().slow) r.frame("lights64-1280x720", mode, "", bench, true);
   }
+}
+
+// A bake that neither reads nor writes the bake cache: a fresh one, timed whole.
+baking::BakeOptions freshBake() {
+  baking::BakeOptions options;
+  options.useCache = false;
+  return options;
+}
+
+// The lightmap modes (SPEC 9: baked lightmaps at several resolutions): the
+// lightmap scene with its lights baked into an N x N map, drawn like any
+// frame, its error taken against the ideal reference of the same lights in
+// real time, so the error is what the bake loses (the map's resolution,
+// bilinear filtering, and any shadow, which real time does not draw). bake_ms is
+// the median of fresh bakes (no cache, every core), repeated while they are
+// cheap: up to 5 (3 with --quick) within about a second (0.2 s).
+std::shared_ptr<const BenchFrame> makeLightmapBench(bool quick, const LightmapSpec& spec, const std::string& scene,
+                                                    const std::string& mode,
+                                                    const std::shared_ptr<const PreparedScene>& realtime) {
+  const auto unbaked = prepareScene(lightmapScene(spec, scene + "-" + mode));
+  const int maxRuns = quick ? 3 : 5;
+  const double budgetMs = quick ? 200 : 1000;
+  std::vector<double> times;
+  std::shared_ptr<const BakedLighting> baked;
+  double spentMs = 0;
+  do {
+    const auto start = Clock::now();
+    baked = baking::bakeScene(*unbaked, freshBake());
+    times.push_back(milliseconds(Clock::now() - start));
+    spentMs += times.back();
+  } while (int(times.size()) < maxRuns && spentMs < budgetMs);
+  std::sort(times.begin(), times.end());
+  const std::size_t n = times.size();
+
+  auto bench = std::make_shared<BenchFrame>();
+  bench->prepared = baking::withBake(*unbaked, baked);
+  bench->frame = prepareFrame(bench->prepared, 0);
+  bench->load = loadOf(bench->frame);
+  bench->referenceKey = scene + "/realtime";
+  bench->errorKey = scene + "/" + mode;
+  bench->referencePrepared = realtime;
+  bench->bakeMs = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+  bench->bakeRuns = int(n);
+  return bench;
+}
+
+// One lightmap scene: its `realtime` point and a `lightmap-N` point per N.
+void registerLightmapScene(Registrar& r, const LightmapSpec& spec, const std::string& scene,
+                           const std::vector<int>& resolutions) {
+  LightmapSpec realtimeSpec = spec;
+  realtimeSpec.baked = false;
+  const auto realtime = prepareScene(lightmapScene(realtimeSpec, scene + "-realtime"));
+  r.lazyFrame(scene, "realtime", [realtime, scene] {
+    auto bench = std::make_shared<BenchFrame>();
+    bench->prepared = realtime;
+    bench->frame = prepareFrame(realtime, 0);
+    bench->load = loadOf(bench->frame);
+    bench->referenceKey = bench->errorKey = scene + "/realtime";
+    return std::shared_ptr<const BenchFrame>(bench);
+  });
+  const bool quick = r.run().settings.quick;
+  for (const int n : resolutions) {
+    LightmapSpec baked = spec;
+    baked.resolution = n;
+    const std::string mode = joined("lightmap-", std::to_string(n));
+    r.lazyFrame(scene, mode, [quick, baked, scene, mode, realtime] {
+      return makeLightmapBench(quick, baked, scene, mode, realtime);
+    });
+  }
+}
+
+// `lightmap-WxH`: no shadow, so the error against real time is the map's
+// alone and falls with N all the way. `lightmap-shadow-WxH`: the same with
+// the shadowed light, at two resolutions: the shadow, which real time does not
+// draw, is an error floor that a finer map cannot remove, and the bake casts
+// shadow rays. --quick and softpipe: the first at 320x180, N = 16 and 128.
+void registerLightmapModes(Registrar& r) {
+  const Run& run = r.run();
+  const bool small = run.slow || run.settings.quick;
+  LightmapSpec spec;
+  spec.shadows = false;
+  // softpipe (its frames take seconds) and --quick (a smoke test): a
+  // sixteenth of the pixels; the world is the same (the field keeps 16:9).
+  if (small) spec.width = 320, spec.height = 180;
+  const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
+  std::vector<int> resolutions(std::begin(kLightmapResolutions), std::end(kLightmapResolutions));
+  if (small) resolutions = {16, 128};
+  registerLightmapScene(r, spec, joined("lightmap-", size), resolutions);
+  if (small) return;
+  spec.shadows = true;
+  registerLightmapScene(r, spec, joined("lightmap-shadow-", size), {64, 512});
 }
 
 // The cost curves: speed only (no error counters: an ideal reference per
@@ -661,6 +798,7 @@ int runFrameBenchmarks(int argc, char** argv) {
     // then pipeline (a fresh backend per iteration).
     const ModeBenches modes = modeBenches(*run);
     registerModes(registrar, modes.shipped);
+    registerLightmapModes(registrar);
     registerCurves(registrar);
     if (settings.suiteScenes) registerSuiteScenes(registrar);
     registerModes(registrar, modes.full);

@@ -5,6 +5,8 @@
 //   prepare/cpu/curve-objects/per-object/<n>   64 lights, n objects (10 .. 10000)
 //   prepare/cpu/curve-lights/shadow-mask/<n>   assignShadowMaskChannels, n mixed shadowed lights
 //   prepare/cpu/lights64-1280x720/<mode>       render_bench's synthetic scene
+//   prepare/cpu/curve-lightmap/bake/<texels>   baking::bakeScene of the shadowed lightmap scene, N x N texels
+//                                              (N = 16 .. 512), no cache, every core, wall-clock time
 //
 // "Preparation" is what a backend does on the CPU for every frame before it
 // records commands: lighting::prepareFrame (camera, visible set, order and
@@ -16,9 +18,11 @@
 // `<family>_RMS`), so the JSON says whether the cost is near-linear.
 #include "suite/bench/prepare_benchmarks.h"
 
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/gpu_packing.h"
 #include "lighting/shadow_mask_channels.h"
+#include "suite/bench/bench_scenes.h"
 #include "suite/bench/prepare_scenes.h"
 
 #include <benchmark/benchmark.h>
@@ -55,6 +59,13 @@ struct Settings {
   }
   std::vector<int> objectCounts() const {
     return quick ? std::vector<int>{10, 100, 1000} : std::vector<int>{10, 100, 1000, 10000};
+  }
+  // Texel counts N * N of the bake curve.
+  std::vector<int> lightmapTexels() const {
+    std::vector<int> out;
+    for (const int n : kLightmapResolutions)
+      if (!quick || n <= 64) out.push_back(n * n);
+    return out;
   }
 };
 
@@ -134,6 +145,37 @@ void shadowMask(benchmark::State& state) {
   state.counters["lights_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// A bake that neither reads nor writes the bake cache: a fresh one, timed whole.
+baking::BakeOptions freshBake() {
+  baking::BakeOptions options;
+  options.useCache = false;
+  return options;
+}
+
+// The lightmapper on render_bench's lightmap scene (suite/bench/bench_scenes.h):
+// one plane of N x N texels under five baked point lights, one with a shadow
+// ray per texel (the `lightmap-shadow` scene of the frame benchmarks). A fresh bake every iteration (no cache), parallel over rows
+// on every core, so the time is wall-clock (UseRealTime).
+void curveLightmapBake(benchmark::State& state) {
+  const int texels = int(state.range(0));
+  const int n = int(std::lround(std::sqrt(double(texels))));
+  const auto prepared = preparedScene("lightmap/" + std::to_string(n), [&] {
+    LightmapSpec spec;
+    spec.resolution = n;
+    spec.shadows = true;  // a shadow ray per texel for one light, as in lightmap-shadow-1280x720
+    return lightmapScene(spec, "lightmap-shadow-1280x720");
+  });
+  for (auto _ : state) {
+    auto baked = baking::bakeScene(*prepared, freshBake());
+    benchmark::DoNotOptimize(baked);
+  }
+  state.SetComplexityN(texels);
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * texels);
+  state.counters["lightmap_texels"] = texels;
+  state.counters["lights"] = double(prepared->scene.lights.size());
+  state.counters["texels_per_s"] = benchmark::Counter(texels, benchmark::Counter::kIsIterationInvariantRate);
+}
+
 // Repetitions and the minimum time come from flags (runPrepareBenchmarks puts
 // the defaults in front of the caller's arguments): set per benchmark, Google
 // Benchmark would append them to every name ("/min_time:0.100/repeats:5").
@@ -155,9 +197,11 @@ class FiniteCounters : public Base {
   using Base::Base;
   void ReportRuns(const std::vector<benchmark::BenchmarkReporter::Run>& runs) override {
     std::vector<benchmark::BenchmarkReporter::Run> finite = runs;
-    for (auto& run : finite)
+    for (auto& run : finite) {
+      run.run_name.time_type.clear();  // "/real_time" of the bake curve: names carry no suffix
       for (auto& [name, counter] : run.counters)
         if (!std::isfinite(counter.value)) counter.value = 0;
+    }
     Base::ReportRuns(finite);
   }
 };
@@ -171,6 +215,8 @@ void registerAll(const Settings& settings) {
   }
   curve(benchmark::RegisterBenchmark("prepare/cpu/curve-objects/per-object", curveObjects), settings.objectCounts());
   curve(benchmark::RegisterBenchmark("prepare/cpu/curve-lights/shadow-mask", shadowMask), settings.lightCounts());
+  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-lightmap/bake", curveLightmapBake), settings.lightmapTexels())
+      ->UseRealTime();
   for (const bool perObject : {false, true}) {
     const std::string mode = perObject ? "per-object" : "all-lights";
     common(benchmark::RegisterBenchmark(("prepare/cpu/lights64-1280x720/" + mode).c_str(),

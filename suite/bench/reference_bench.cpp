@@ -2,6 +2,7 @@
 // every scene of suite/scenes, plus two synthetic loads that the issue names
 // (512x512 over 100k triangles; 64 lights summed per pixel). Counters report
 // pixels and pixel-light evaluations per second, tolerance shading included.
+#include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "reference/reference_renderer.h"
@@ -17,7 +18,7 @@ namespace {
 using namespace lighting;
 
 void renderFrame(benchmark::State& state, const Scene& scene) {
-  auto prepared = prepareScene(scene);
+  auto prepared = baking::prepareBakedScene(scene);  // the suite's baked scenes need their maps
   const Frame frame = prepareFrame(prepared, 0);
   const reference::ReferenceRenderer renderer(prepared);
   std::int64_t evaluations = 0;

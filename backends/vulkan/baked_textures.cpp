@@ -1,0 +1,170 @@
+#include "backends/vulkan/baked_textures.h"
+
+#include "backends/vulkan/texture_upload.h"
+
+#include <array>
+#include <chrono>
+#include <string>
+
+namespace backends::vulkan {
+namespace {
+
+constexpr std::array<float, 4> kNoLightmapTexel{0.0f, 0.0f, 0.0f, 1.0f};
+constexpr std::array<float, 4> kNoShadowMaskTexel{1.0f, 1.0f, 1.0f, 1.0f};
+
+vk::raii::Sampler createSampler(const vk::raii::Device& device, vk::Filter filter) {
+  return vk::raii::Sampler(device, vk::SamplerCreateInfo{.magFilter = filter,
+                                                         .minFilter = filter,
+                                                         .mipmapMode = vk::SamplerMipmapMode::eNearest,
+                                                         .addressModeU = vk::SamplerAddressMode::eClampToEdge,
+                                                         .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                         .addressModeW = vk::SamplerAddressMode::eClampToEdge,
+                                                         .mipLodBias = 0.0f,
+                                                         .anisotropyEnable = VK_FALSE,
+                                                         .compareEnable = VK_FALSE,
+                                                         .minLod = 0.0f,
+                                                         .maxLod = 0.0f,
+                                                         .unnormalizedCoordinates = VK_FALSE});
+}
+
+struct BoundMap {
+  const DeviceImage* image;
+  const vk::raii::Sampler* sampler;
+};
+
+void writeSet(const vk::raii::Device& device, vk::DescriptorSet set, BoundMap lightmap, BoundMap shadowMask) {
+  const std::array<vk::DescriptorImageInfo, 2> images{{
+      {.sampler = **lightmap.sampler, .imageView = *lightmap.image->view,
+       .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal},
+      {.sampler = **shadowMask.sampler, .imageView = *shadowMask.image->view,
+       .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal},
+  }};
+  std::array<vk::WriteDescriptorSet, 2> writes;
+  for (std::uint32_t b = 0; b < 2; ++b)
+    writes[b] = {.dstSet = set, .dstBinding = b, .descriptorCount = 1,
+                 .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &images[b]};
+  device.updateDescriptorSets(writes, {});
+}
+
+vk::raii::DescriptorPool createPool(const vk::raii::Device& device, std::uint32_t sets) {
+  const vk::DescriptorPoolSize size{vk::DescriptorType::eCombinedImageSampler, 2 * sets};
+  // FreeDescriptorSet: vk::raii::DescriptorSet frees itself when destroyed.
+  return vk::raii::DescriptorPool(device, vk::DescriptorPoolCreateInfo{
+                                              .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                              .maxSets = sets,
+                                              .poolSizeCount = 1,
+                                              .pPoolSizes = &size});
+}
+
+std::vector<vk::raii::DescriptorSet> allocateSets(const vk::raii::Device& device, const vk::raii::DescriptorPool& pool,
+                                                  const vk::raii::DescriptorSetLayout& layout, std::uint32_t count) {
+  const std::vector<vk::DescriptorSetLayout> layouts(count, *layout);
+  vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo{.descriptorPool = *pool,
+                                                                      .descriptorSetCount = count,
+                                                                      .pSetLayouts = layouts.data()});
+  return std::vector<vk::raii::DescriptorSet>(std::make_move_iterator(sets.begin()), std::make_move_iterator(sets.end()));
+}
+
+}  // namespace
+
+vk::raii::DescriptorSetLayout createBakedMapsSetLayout(const vk::raii::Device& device) {
+  const std::array<vk::DescriptorSetLayoutBinding, 2> bindings{{
+      {.binding = 0, .descriptorType = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 1,
+       .stageFlags = vk::ShaderStageFlagBits::eFragment},  // lightmapTexture
+      {.binding = 1, .descriptorType = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 1,
+       .stageFlags = vk::ShaderStageFlagBits::eFragment},  // shadowMaskTexture
+  }};
+  return vk::raii::DescriptorSetLayout(
+      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
+}
+
+BakedMapDefaults::BakedMapDefaults(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout)
+    : bilinear_(createSampler(device.device, vk::Filter::eLinear)),
+      nearest_(createSampler(device.device, vk::Filter::eNearest)),
+      noLightmap_(createSampledMapImage(device, {1, 1})),
+      noShadowMask_(createSampledMapImage(device, {1, 1})) {
+  const std::array<TextureUpload, 2> uploads{{{&noLightmap_, kNoLightmapTexel}, {&noShadowMask_, kNoShadowMaskTexel}}};
+  uploadTextures(device, uploads);
+  pool_ = createPool(device.device, 1);
+  set_ = std::move(allocateSets(device.device, pool_, layout, 1).front());
+  writeSet(device.device, *set_, {&noLightmap_, &nearest_}, {&noShadowMask_, &nearest_});
+}
+
+void requireFilterableMapFormat(const VulkanDevice& device) {
+  const vk::FormatProperties properties = device.physical.getFormatProperties(kSampledMapFormat);
+  const vk::FormatFeatureFlags needed =
+      vk::FormatFeatureFlagBits::eSampledImage | vk::FormatFeatureFlagBits::eSampledImageFilterLinear;
+  if ((properties.optimalTilingFeatures & needed) != needed)
+    throw NotSupportedError(device.info.name +
+                            " cannot sample R32G32B32A32_SFLOAT images with optimal tiling and linear filtering "
+                            "(optimalTilingFeatures lacks SAMPLED_IMAGE or SAMPLED_IMAGE_FILTER_LINEAR); the "
+                            "lightmaps and shadow masks of SPEC 3.5 and 3.6 are sampled bilinearly from such images");
+}
+
+SceneBakedTextures::SceneBakedTextures(const VulkanDevice& device, const BakedMapDefaults& defaults,
+                                       const vk::raii::DescriptorSetLayout& layout,
+                                       std::shared_ptr<const lighting::PreparedScene> prepared)
+    : prepared_(std::move(prepared)), baked_(prepared_->baked) {
+  const std::size_t objectCount = prepared_->scene.objects.size();
+  std::vector<const lighting::ObjectBake*> bakes(objectCount);
+  std::uint32_t withMaps = 0;
+  bool anyTexels = false;
+  for (std::size_t o = 0; o < objectCount; ++o) {
+    bakes[o] = prepared_->bakeOf(int(o));  // throws when the bake is missing
+    if (!bakes[o]) continue;
+    ++withMaps;
+    for (const lighting::TexelMap* map : {&bakes[o]->lightmap, &bakes[o]->shadowMask}) {
+      if (map->empty()) continue;
+      anyTexels = true;
+      if (std::uint32_t(map->resolution) > device.limits.maxImageDimension2D)
+        throw NotSupportedError(device.info.name + " cannot hold a " + std::to_string(map->resolution) +
+                                "-texel map (maxImageDimension2D " +
+                                std::to_string(device.limits.maxImageDimension2D) + ")");
+    }
+  }
+  sets_.assign(objectCount, defaults.noMapsSet());
+  if (withMaps == 0) return;
+  if (anyTexels) requireFilterableMapFormat(device);
+
+  const auto start = std::chrono::steady_clock::now();
+  // One image per non-empty map; every image is made before the uploads
+  // point at them, so no later push_back moves one under a pointer.
+  struct ObjectImages {
+    std::ptrdiff_t lightmap = -1, shadowMask = -1;  // index in images_, -1: the stand-in
+  };
+  std::vector<ObjectImages> objectImages(objectCount);
+  for (std::size_t o = 0; o < objectCount; ++o) {
+    if (!bakes[o]) continue;
+    auto add = [&](const lighting::TexelMap& map) -> std::ptrdiff_t {
+      if (map.empty()) return -1;
+      const auto n = std::uint32_t(map.resolution);
+      images_.push_back(createSampledMapImage(device, {n, n}));
+      return std::ptrdiff_t(images_.size() - 1);
+    };
+    objectImages[o] = {add(bakes[o]->lightmap), add(bakes[o]->shadowMask)};
+  }
+  std::vector<TextureUpload> uploads;
+  for (std::size_t o = 0; o < objectCount; ++o) {
+    if (objectImages[o].lightmap >= 0) uploads.push_back({&images_[objectImages[o].lightmap], bakes[o]->lightmap.texels});
+    if (objectImages[o].shadowMask >= 0)
+      uploads.push_back({&images_[objectImages[o].shadowMask], bakes[o]->shadowMask.texels});
+  }
+  uploadTextures(device, uploads);
+
+  pool_ = createPool(device.device, withMaps);
+  ownSets_ = allocateSets(device.device, pool_, layout, withMaps);
+  std::size_t next = 0;
+  for (std::size_t o = 0; o < objectCount; ++o) {
+    if (!bakes[o]) continue;
+    const ObjectImages& im = objectImages[o];
+    const BoundMap lightmap = im.lightmap >= 0 ? BoundMap{&images_[im.lightmap], &defaults.bilinear()}
+                                               : BoundMap{&defaults.noLightmap(), &defaults.nearest()};
+    const BoundMap shadowMask = im.shadowMask >= 0 ? BoundMap{&images_[im.shadowMask], &defaults.bilinear()}
+                                                   : BoundMap{&defaults.noShadowMask(), &defaults.nearest()};
+    sets_[o] = *ownSets_[next++];
+    writeSet(device.device, sets_[o], lightmap, shadowMask);
+  }
+  uploadMilliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace backends::vulkan

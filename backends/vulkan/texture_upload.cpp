@@ -1,0 +1,101 @@
+#include "backends/vulkan/texture_upload.h"
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace backends::vulkan {
+namespace {
+
+constexpr std::uint64_t kNoTimeout = UINT64_MAX;
+constexpr vk::DeviceSize kTexelBytes = 4 * sizeof(float);
+
+vk::ImageMemoryBarrier2 layoutTransition(const DeviceImage& image, vk::ImageLayout from, vk::ImageLayout to) {
+  vk::ImageMemoryBarrier2 barrier{.oldLayout = from,
+                                  .newLayout = to,
+                                  .image = *image.image,
+                                  .subresourceRange = {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}};
+  if (to == vk::ImageLayout::eTransferDstOptimal) {
+    // A fresh image: nothing before the copy to wait for.
+    barrier.dstStageMask = vk::PipelineStageFlagBits2::eCopy;
+    barrier.dstAccessMask = vk::AccessFlagBits2::eTransferWrite;
+  } else {
+    // The copy's writes become visible to every later fragment-shader read,
+    // in this submission or any later one on the queue.
+    barrier.srcStageMask = vk::PipelineStageFlagBits2::eCopy;
+    barrier.srcAccessMask = vk::AccessFlagBits2::eTransferWrite;
+    barrier.dstStageMask = vk::PipelineStageFlagBits2::eFragmentShader;
+    barrier.dstAccessMask = vk::AccessFlagBits2::eShaderSampledRead;
+  }
+  return barrier;
+}
+
+}  // namespace
+
+DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D extent) {
+  return DeviceImage(device, kSampledMapFormat, extent,
+                     vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                     vk::ImageAspectFlagBits::eColor);
+}
+
+void uploadTextures(const VulkanDevice& device, std::span<const TextureUpload> uploads) {
+  if (uploads.empty()) return;
+  // Each image's texels at its own offset; every size is a whole number of
+  // 16-byte texels, so every offset is a multiple of the texel size, as
+  // vkCmdCopyBufferToImage requires.
+  std::vector<vk::DeviceSize> offsets;
+  vk::DeviceSize total = 0;
+  for (const TextureUpload& u : uploads) {
+    const vk::Extent2D extent = u.image->extent;
+    if (u.texels.size_bytes() != vk::DeviceSize(extent.width) * extent.height * kTexelBytes)
+      throw std::logic_error("a texture upload of " + std::to_string(u.texels.size()) + " floats for a " +
+                             std::to_string(extent.width) + " x " + std::to_string(extent.height) + " image");
+    offsets.push_back(total);
+    total += u.texels.size_bytes();
+  }
+  HostBuffer staging(device, total, vk::BufferUsageFlagBits::eTransferSrc);
+  for (std::size_t k = 0; k < uploads.size(); ++k) staging.write(uploads[k].texels, offsets[k]);
+
+  const vk::raii::CommandPool pool(device.device,
+                                   vk::CommandPoolCreateInfo{.flags = vk::CommandPoolCreateFlagBits::eTransient,
+                                                             .queueFamilyIndex = device.queueFamily});
+  vk::raii::CommandBuffers buffers(device.device, vk::CommandBufferAllocateInfo{.commandPool = *pool,
+                                                                                .level = vk::CommandBufferLevel::ePrimary,
+                                                                                .commandBufferCount = 1});
+  const vk::raii::CommandBuffer& cb = buffers.front();
+  cb.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+
+  std::vector<vk::ImageMemoryBarrier2> barriers;
+  for (const TextureUpload& u : uploads)
+    barriers.push_back(layoutTransition(*u.image, vk::ImageLayout::eUndefined, vk::ImageLayout::eTransferDstOptimal));
+  cb.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = std::uint32_t(barriers.size()),
+                                         .pImageMemoryBarriers = barriers.data()});
+  for (std::size_t k = 0; k < uploads.size(); ++k) {
+    const vk::Extent2D extent = uploads[k].image->extent;
+    const vk::BufferImageCopy region{.bufferOffset = offsets[k],
+                                     .bufferRowLength = 0,  // tightly packed
+                                     .bufferImageHeight = 0,
+                                     .imageSubresource = {vk::ImageAspectFlagBits::eColor, 0, 0, 1},
+                                     .imageOffset = {0, 0, 0},
+                                     .imageExtent = {extent.width, extent.height, 1}};
+    cb.copyBufferToImage(*staging.buffer, *uploads[k].image->image, vk::ImageLayout::eTransferDstOptimal, region);
+  }
+  barriers.clear();
+  for (const TextureUpload& u : uploads)
+    barriers.push_back(
+        layoutTransition(*u.image, vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eShaderReadOnlyOptimal));
+  cb.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = std::uint32_t(barriers.size()),
+                                         .pImageMemoryBarriers = barriers.data()});
+  cb.end();
+
+  // The staging buffer is coherent and written before the submission, which
+  // makes host writes visible to the device by itself.
+  const vk::raii::Fence fence(device.device, vk::FenceCreateInfo{});
+  const vk::CommandBuffer handle = *cb;
+  device.queue.submit(vk::SubmitInfo{.commandBufferCount = 1, .pCommandBuffers = &handle}, *fence);
+  if (device.device.waitForFences({*fence}, VK_TRUE, kNoTimeout) != vk::Result::eSuccess)
+    throw DriverError("waiting for the Vulkan queue failed while uploading textures");
+}
+
+}  // namespace backends::vulkan
