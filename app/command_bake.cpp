@@ -37,8 +37,10 @@ std::string fileStemOf(const std::string& name, int object, std::set<std::string
   std::string stem;
   for (char c : name) stem += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-' ? c : '_';
   if (stem.empty() || stem.front() == '.' || taken.count(stem)) {
-    stem += '-';
-    stem += std::to_string(object);
+    // "a", "a-2", "a" must not give "a-2" twice: suffix until unused.
+    const std::string base = stem + '-' + std::to_string(object);
+    stem = base;
+    for (int extra = 2; taken.count(stem); ++extra) stem = base + '-' + std::to_string(extra);
   }
   taken.insert(stem);
   return stem;
@@ -129,6 +131,10 @@ int runBakeCommand(const BakeArguments& args, std::ostream& out, std::ostream& e
 
     makeOutputDirectory(args.outDir);
     const fs::path dir(args.outDir);
+    // bake.json, written last, marks a complete folder: an old one must not
+    // vouch for maps this run fails to write.
+    std::error_code ignored;
+    fs::remove(dir / "bake.json", ignored);
     Json objects = Json::array();
     int maxOverlap = 0;
     long long conflicts = 0;

@@ -12,7 +12,7 @@
 
 namespace app {
 
-SceneInput loadSceneInput(const SceneArguments& args) {
+SceneInput loadSceneInput(const SceneArguments& args, bool bake) {
   SceneInput input;
   lighting::Scene scene = lighting::loadSceneFile(args.scenePath);
   const int count = scene.frames.count;
@@ -21,7 +21,7 @@ SceneInput loadSceneInput(const SceneArguments& args) {
                      std::to_string(count) + " frame(s), 0.." + std::to_string(count - 1));
   // Scenes with lightmaps are baked here (or read from the bake cache), so
   // every command renders them with their maps (SPEC 3.6).
-  input.prepared = baking::prepareBakedScene(std::move(scene));
+  input.prepared = bake ? baking::prepareBakedScene(std::move(scene)) : lighting::prepareScene(std::move(scene));
   input.frame = lighting::prepareFrame(input.prepared, args.frame);
   return input;
 }

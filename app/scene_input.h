@@ -22,7 +22,9 @@ struct SceneInput {
 };
 
 // Throws InputError for an unreadable or invalid scene, or a frame out of range.
-SceneInput loadSceneInput(const SceneArguments& args);
+// `bake`: commands that render bake the scene's lightmaps here (or read them
+// from the bake cache); `lightcts lights` only selects and needs no maps.
+SceneInput loadSceneInput(const SceneArguments& args, bool bake = true);
 
 // Runs a command body, turning InputError and SceneLoadError into exit 2 and
 // anything unexpected into exit 4, each with one line on `err`.

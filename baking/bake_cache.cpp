@@ -2,6 +2,7 @@
 
 #include "baking/byte_stream.h"
 #include "baking/sha256.h"
+#include "baking/source_fingerprint.h"  // generated (CMakeLists.txt)
 
 #include <algorithm>
 #include <atomic>
@@ -182,6 +183,7 @@ std::string bakeCacheKey(const lighting::PreparedScene& prepared, const BakeOpti
   ByteWriter w;
   w.text("lightcts-bake");
   w.u32(kBakerVersion);
+  w.text(kBakerSourceFingerprint);  // the code that computes texels, hashed at build time
   w.u32(std::uint32_t(prepared.scene.pipeline.profile));
   w.u64(prepared.scene.objects.size());
   for (std::size_t o = 0; o < prepared.scene.objects.size(); ++o)
