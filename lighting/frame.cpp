@@ -18,7 +18,10 @@ ShaderFeatures featuresOf(const Frame& frame) {
   const Scene& scene = frame.scene();
   ShaderFeatures f;
   f.perObjectLists = Frame::perObjectListsEnabled(scene);
-  f.vertexLights = scene.pipeline.profile == Profile::Legacy;
+  const bool deferred = scene.pipeline.path == RenderPath::Deferred;
+  // Deferred lights every kept light per pixel: no vertex lights (SPEC 3.7).
+  f.vertexLights = scene.pipeline.profile == Profile::Legacy && !deferred;
+  f.ldr8Buffer = deferred && scene.pipeline.deferredBuffer == DeferredBuffer::Ldr8;
   f.ambient = scene.ambient != Vec3(0.0);
   auto note = [&](int lightIndex) {
     const Light& l = scene.lights[lightIndex];
@@ -70,6 +73,8 @@ const ObjectBake* PreparedScene::bakeOf(int object) const {
 }
 
 bool Frame::perObjectListsEnabled(const Scene& scene) {
+  // Deferred draws light volumes, not objects: per-object lists do not apply.
+  if (scene.pipeline.path == RenderPath::Deferred) return false;
   return scene.pipeline.profile == Profile::Legacy || scene.pipeline.lightsPerObject;
 }
 

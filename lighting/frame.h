@@ -53,6 +53,7 @@ struct ShaderFeatures {
   bool vertexLights = false;   // legacy profile only
   bool shadowMask = false;     // a mixed light with a channel on an object with a mask
   bool lightmap = false;       // some object has a lightmap (SPEC 3.6)
+  bool ldr8Buffer = false;     // deferred path with the ldr8 light buffer (SPEC 3.7)
   bool ambient = false;
 };
 
@@ -71,8 +72,10 @@ struct Frame {
   ShaderFeatures features;
 
   const Scene& scene() const { return prepared->scene; }
+  // False on the deferred path: it lights every kept light per pixel.
   static bool perObjectListsEnabled(const Scene& scene);
-  // The lights that reach an object under the scene's budgets (SPEC 4).
+  // The lights that reach an object under the scene's budgets (SPEC 4). The
+  // deferred path (SPEC 3.7): every kept light per pixel, no vertex lights.
   ObjectLights lightsForObject(int object) const;
   // SPEC 6 `--ideal`: every light that is not baked, per pixel, no budgets. A
   // mixed light demoted by SPEC 5.3 counts as baked: it lives in the lightmap,

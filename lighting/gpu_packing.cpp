@@ -16,9 +16,9 @@ GpuMat4 mat4(const glm::dmat4& m) {
   return out;
 }
 
-// `weight`: the light's fade weight (lighting/light_fade.h); it scales
-// finalColor in double before the one rounding to float.
-GpuLight packLight(const Frame& frame, int lightIndex, double weight) {
+}  // namespace
+
+GpuLight packGpuLight(const Frame& frame, int lightIndex, double weight) {
   const Scene& scene = frame.scene();
   const Light& light = scene.lights[lightIndex];
   GpuLight g;
@@ -38,8 +38,6 @@ GpuLight packLight(const Frame& frame, int lightIndex, double weight) {
   return g;
 }
 
-}  // namespace
-
 GpuFrameBlock packFrameBlock(const Frame& frame) {
   GpuFrameBlock block;
   block.viewProjection = mat4(frame.view.cameraRelativeViewProjection());
@@ -49,9 +47,9 @@ GpuFrameBlock packFrameBlock(const Frame& frame) {
   const bool legacy = frame.scene().pipeline.profile == Profile::Legacy;
   block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, 0};
   for (std::size_t i = 0; i < packed.directional.size(); ++i)
-    block.directionalLights[i] = packLight(frame, packed.directional[i], packed.directionalWeight[i]);
+    block.directionalLights[i] = packGpuLight(frame, packed.directional[i], packed.directionalWeight[i]);
   for (std::size_t i = 0; i < packed.other.size(); ++i)
-    block.otherLights[i] = packLight(frame, packed.other[i], packed.otherWeight[i]);
+    block.otherLights[i] = packGpuLight(frame, packed.other[i], packed.otherWeight[i]);
   return block;
 }
 

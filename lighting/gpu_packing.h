@@ -74,6 +74,10 @@ struct GpuVertex {
 static_assert(sizeof(GpuVertex) == 24);
 
 GpuFrameBlock packFrameBlock(const Frame& frame);
+// One light as FrameBlock holds it (also the deferred light pass's block).
+// `weight`: the light's fade weight (lighting/light_fade.h); it scales
+// finalColor in double before the one rounding to float.
+GpuLight packGpuLight(const Frame& frame, int sceneLight, double weight);
 GpuObjectBlock packObjectBlock(const Frame& frame, int object);
 std::vector<GpuVertex> packVertices(const Mesh& mesh);
 std::vector<std::uint32_t> packIndices(const Mesh& mesh);

@@ -3,6 +3,7 @@
 #include "reference/tolerance_model.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,7 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
       const double nl = saturate(glm::dot(N, light.towardLight));
       const Vec3 term = light.finalColor * (nl * shadowMask);
       sum.value += term;
+      sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
       absoluteSum += term;
       sum.errorBound += term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
                         light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
@@ -74,6 +76,7 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double falloff = shadowMask * rangeAtt / distSqr;
     const Vec3 term = light.finalColor * (nl * spotAtt * falloff);
     sum.value += term;
+    sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
     absoluteSum += term;
 
     // First-order error of the same formula in float32 (docs/tolerances.md):
@@ -81,7 +84,8 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     // to rayError/d and changes distSqr by 2 rayError/d relative.
     const double distance = std::sqrt(distSqr);
     const double rayError = tol::kPositionRoundingSteps * u *
-                            (pointMagnitude + glm::length(light.position - where.camera));
+                                (pointMagnitude + glm::length(light.position - where.camera)) +
+                            where.reconstructionError;
     const double directionError = std::min(1.0, tol::kUnitDotAbsError + rayError / distance);
     const double distSqrRelError = tol::kRoundingStepsPerLightTerm * u + std::min(1.0, 2.0 * rayError / distance);
     const double baseMagnitude = shadowMask * rangeAtt / distSqr;

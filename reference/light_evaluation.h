@@ -17,12 +17,18 @@ struct LightSum {
   Vec3 value{0.0};   // sum of finalColor * saturate(dot(N, L)) * attenuation, without albedo
   Vec3 errorBound{0.0};
   int evaluations = 0;
+  // Per channel, how many terms were > 0: the deferred light buffers round
+  // once or twice per light that adds something (deferred_buffers.h).
+  lighting::Vec3 contributing{0.0};
 };
 
 // Where the point's float32 position comes from, for the position error.
 struct PositionContext {
   Vec3 camera{0.0};
   double objectExtent = 0;  // |object centre - camera| + object radius
+  // Deferred path: the light pass reconstructs the position from depth, off
+  // by up to this much more (world units; deferred_buffers.h).
+  double reconstructionError = 0;
 };
 
 // The shadow mask at a point (SPEC 3.5): the object's mask sampled at the

@@ -1,6 +1,7 @@
 #include "reference/reference_renderer.h"
 
 #include "reference/baked_lights_realtime.h"
+#include "reference/deferred_buffers.h"
 #include "reference/light_evaluation.h"
 #include "reference/lightmap_sampling.h"
 #include "reference/parallel_rows.h"
@@ -137,8 +138,12 @@ struct FrameShading {
       }
     }
 
+    const Scene& scene = frame.scene();
+    const bool deferred = scene.pipeline.path == RenderPath::Deferred;
+    PositionContext where = contexts[tri.object];
+    if (deferred) where.reconstructionError = reconstructionPositionError(frame.view, p);
     LightSum sum;
-    evaluator.accumulate(lights[tri.object].perPixel, p, N, contexts[tri.object], sum,
+    evaluator.accumulate(lights[tri.object].perPixel, p, N, where, sum,
                          bake && !bake->shadowMask.empty() ? &mask : nullptr);
     if (!lights[tri.object].perVertex.empty()) {
       sum.value += b0 * vertexValue[tri.vertex[0]] + hit.b1 * vertexValue[tri.vertex[1]] +
@@ -146,16 +151,37 @@ struct FrameShading {
       sum.errorBound += b0 * vertexBound[tri.vertex[0]] + hit.b1 * vertexBound[tri.vertex[1]] +
                         hit.b2 * vertexBound[tri.vertex[2]];
     }
-    const Scene& scene = frame.scene();
     const Vec3& albedo = scene.objects[tri.object].albedo;
     // SPEC 3: colour = A * ambient + A * lightmap(p) + the light sums.
     Shaded shaded;
     shaded.value = albedo * (scene.ambient + baked + sum.value);
     const double combineSteps = tol::kFinalCombineSteps + (bake ? tol::kLightmapAddRoundingSteps : 0.0);
     shaded.bound = albedo * (sum.errorBound + bakedBound) + glm::abs(shaded.value) * (combineSteps * tol::kUnitRoundoff);
+    if (deferred) applyDeferredBuffer(scene.pipeline.deferredBuffer, albedo, sum, shaded);
     shaded.interpolation = albedo * interpolation;
     shaded.evaluations = sum.evaluations;
     return shaded;
+  }
+
+  // SPEC 3.7: the light sum goes through the light buffer. `shaded` holds
+  // the forward value and bound; the light part A * sum is replaced by what
+  // the buffer decodes to, with the buffer's own error (deferred_buffers.h).
+  static void applyDeferredBuffer(DeferredBuffer buffer, const Vec3& albedo, const LightSum& sum, Shaded& shaded) {
+    const Vec3 light = albedo * sum.value;
+    // Albedo times each light's term before the blend: one rounding per term.
+    shaded.bound += glm::abs(light) * (tol::kDeferredAlbedoProductSteps * tol::kUnitRoundoff);
+    for (int c = 0; c < 3; ++c) {
+      // A light adds nothing in a channel whose albedo is 0: exp2(-0) = 1, + 0.
+      const int contributing = albedo[c] > 0 ? int(sum.contributing[c]) : 0;
+      if (buffer == DeferredBuffer::Hdr16) shaded.bound[c] += hdr16BlendBound(light[c], contributing);
+      if (buffer == DeferredBuffer::Ldr8) {
+        shaded.value[c] += decodedLightSum(buffer, light[c]) - light[c];
+        // The light sum's arithmetic bound acts inside the encoding: the
+        // decode bound carries it (and clamps it at saturation).
+        const double sumBound = albedo[c] * sum.errorBound[c];
+        shaded.bound[c] += ldr8DecodeBound(light[c], contributing, sumBound) - sumBound;
+      }
+    }
   }
 
   // Depth-buffer resolution in view depth at depth z (SPEC 7: D32F, LESS).

@@ -89,4 +89,63 @@ constexpr double kShadowMaskRoundingSteps = 3;
 // value below the smallest normal float may read as 0.
 constexpr double kFlushToZeroFloor = 0x1p-126;
 
+// --- The deferred path (SPEC 3.7; docs/tolerances.md "Deferred buffers") ---
+
+// Position reconstruction, depth: the light pass gets the window depth the
+// G-buffer stored (gl_FragCoord.z, float32 in RGBA32F, so storing is exact)
+// and maps it back through the float32 inverse view-projection. The
+// rasteriser's depth is off by the same kDepthTieUlps the depth test allows
+// (8 ULPs, absolute units of u since the depth is below 1); the float matrix
+// entries of the depth-to-w row (2 roundings) and its product and sum (2)
+// add 4: 12 units of u of window depth, turned into view depth by
+// |d z_view / d z_window|.
+constexpr double kReconstructionDepthSteps = 12;
+
+// Position reconstruction, screen position: ndc.xy = vClip.xy / vClip.w
+// interpolated over the light volume's triangle (perspective-correct weights,
+// a sum of three products, a divide), absolute in units of u of |ndc| <= 1,
+// turned into world units by the view's half-extent at the point's depth.
+// Clipped triangle vertices lie within |x|, |y| <= w (a guard band multiplies
+// this, but a lateral error is also a sub-pixel shift: 13u of NDC is 1e-4
+// pixel at 256 pixels, far inside kSubpixelShiftPx).
+constexpr double kReconstructionNdcSteps = 13;
+
+// The float32 inverse view-projection product itself and the divide by w, in
+// units of u times |p - camera|: 4 entries rounded, 4 products, 3 sums, the
+// divide (12), with the magnitudes of a rotation's row summing to at most
+// sqrt(3) |p - camera| and the projection's tangent: 16 after rounding up.
+constexpr double kReconstructionMatrixSteps = 16;
+
+// The light pass multiplies each light's term by the albedo before the blend
+// adds it (forward multiplies the sum once): one more rounding per light.
+constexpr double kDeferredAlbedoProductSteps = 1;
+
+// hdr16 (RGBA16F): a half has 11 significant bits, unit roundoff 2^-11.
+// Each additive blend of a light that adds something rounds the incoming
+// value and the new running sum to half (docs/tolerances.md).
+constexpr double kHalfUnitRoundoff = 0x1p-11;
+
+// A device may flush 16-bit denormals (below 2^-14) to zero on conversion:
+// absolute floor of each half rounding.
+constexpr double kHalfFlushFloor = 0x1p-14;
+
+// ldr8 (RGBA8 UNORM): a value is stored as n / 255. Vulkan and OpenGL say
+// the conversion should round to nearest (Vulkan: "one of the two closest",
+// "implementations should round to nearest"); this model takes round to
+// nearest, what lavapipe, llvmpipe and softpipe do: half a step per
+// conversion. A device that truncates needs tolerance_scale 2 on ldr8 scenes.
+constexpr double kUnormSteps = 255.0;
+constexpr double kUnormRoundingError = 0.5 / kUnormSteps;
+
+// ldr8's decode -log2(max(x, 1/255)) saturates the light sum here.
+constexpr double kLdr8SmallestDecoded = 1.0 / kUnormSteps;
+
+// GLSL exp2 is within 3 + 2|c| ULP (relative 2u each) of exp2(-c).
+constexpr double kExp2Ulps = 3;
+constexpr double kExp2UlpsPerUnitArgument = 2;
+
+// GLSL log2 of the decode: 3 ULP of results below 8 (log2(255) < 8), or
+// 2^-21 absolute for x in [0.5, 2]: at most 3 x 2^-20 absolute.
+constexpr double kLdr8DecodeAbsError = 3 * 0x1p-20;
+
 }  // namespace reference::tolerance

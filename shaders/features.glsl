@@ -20,5 +20,9 @@ layout(constant_id = 6) const bool AMBIENT = true;
 layout(constant_id = 7) const int MUTANT = 0;
 // Baked light: the object's lightmap is sampled and added (SPEC 3.6).
 layout(constant_id = 8) const bool LIGHTMAP = true;
+// Deferred path (SPEC 3.7): the light buffer is ldr8, so the light pass
+// writes exp2(-c) and the composite decodes -log2(max(x, 1/255)). The full
+// shader (every constant on) asks DeferredFrameBlock.bufferFormat (deferred_data.glsl).
+layout(constant_id = 9) const bool LDR8_BUFFER = true;
 
 #endif

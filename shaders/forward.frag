@@ -3,6 +3,7 @@
 // Forward fragment stage: SPEC 3's sum for one fragment, over the lights the
 // CPU kept (SPEC 4 and 5): every kept light, or the object's list.
 #include "lighting.glsl"
+#include "object_data.glsl"
 
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;

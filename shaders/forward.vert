@@ -5,6 +5,7 @@
 // positions 4-7, evaluated here with the rotated, normalised vertex normal
 // and interpolated perspective-correct).
 #include "lighting.glsl"
+#include "object_data.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;

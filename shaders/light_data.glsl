@@ -23,25 +23,8 @@ layout(std140, set = 0, binding = 0) uniform FrameBlock {
   vec4 cameraPosition;  // xyz: the camera position in float; read only by the absolute-coordinates mutant
 } frameData;
 
-layout(std140, set = 0, binding = 1) uniform ObjectBlock {
-  mat4 model;           // local to camera-relative world
-  mat4 normalMatrix;    // the rotation R (SPEC 1)
-  vec4 albedo;
-  ivec4 lightList;      // x: list count (may exceed 8), y: lightmap, z: shadow mask, w: 1 when the list is in use
-  ivec4 lightIndices[2];  // packed indices into otherLights, -1 past the end
-  vec4 lightmapTransform;
-} objectData;
-
-// The specialised shader knows these from its constants; the full shader
+// The specialised shader knows this from its constants; the full shader
 // (every constant on) asks the data, so it draws any scene.
 bool legacyProfile() { return VERTEX_LIGHTS && frameData.lightCounts.z != 0; }
-bool objectListInUse() { return PER_OBJECT_LISTS && objectData.lightList.w != 0; }
-
-// The list index k of this object (0 <= k < 8).
-int objectLightIndex(int k) {
-  // Mutant: a loop that runs past 8 wraps around and applies lights again.
-  if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) k = k % 8;
-  return objectData.lightIndices[k / 4][k % 4];
-}
 
 #endif

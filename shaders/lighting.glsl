@@ -52,9 +52,12 @@ float spotAttenuation(vec3 spotDirection, vec3 L, vec2 factors) {
 
 // SPEC 3.5: lerp(1, mask[c], strength) for a light with channel c >= 0 on an
 // object with a shadow mask; 1 otherwise. `mask` is the object's shadow mask
-// at this point (all ones where it has none).
+// at this point, all ones where it has none: the caller decides (forward from
+// the object's flag, deferred from the G-buffer's mask target), so this
+// function reads no per-object data. All ones gives exactly 1 (what the
+// model's lerp(1, 1, strength) is) whatever rounding mix() would do.
 float shadowMaskAttenuation(Light light, vec4 mask) {
-  if (!SHADOW_MASK || objectData.lightList.z == 0) return 1.0;
+  if (!SHADOW_MASK || mask == vec4(1.0)) return 1.0;
   int channel = int(light.spotAngles.z);
   if (channel < 0) return 1.0;
   if (MUTANT == MUTANT_SHADOW_MASK_CHANNEL_OFF_BY_ONE) channel = (channel + 1) % 4;

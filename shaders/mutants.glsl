@@ -24,5 +24,8 @@ const int MUTANT_SHADOW_MASK_CHANNEL_OFF_BY_ONE = 13;  // a mixed light reads ma
 const int MUTANT_SHADOW_STRENGTH_IGNORED = 14;        // shadowMask = mask[c], as if every strength were 1
 // 15 (demoted-light-still-lit) and 16 (legacy-falloff-baked) change the data
 // the CPU hands over, not the shader (conformance/cpu_mutants.h).
+const int MUTANT_UNCLAMPED_LDR_DECODE = 17;           // the ldr8 composite decodes -log2(x), no max(x, 1/255)
+// 18 (point-volume-outside-only) changes the light pass's pipeline state
+// (front faces, depth test LESS_OR_EQUAL for icosphere volumes), not the shader.
 
 #endif

@@ -15,6 +15,8 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kShadowMask] = all || f.shadowMask;
   v[kAmbient] = all || f.ambient;
   v[kLightmap] = all || f.lightmap;
+  // The full shader reads the buffer format from DeferredFrameBlock.
+  v[kLdr8Buffer] = all || f.ldr8Buffer;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   return v;
 }

@@ -20,7 +20,8 @@ enum ConstantId : std::uint32_t {
   kAmbient = 6,
   kMutant = 7,
   kLightmap = 8,
-  kConstantCount = 9,
+  kLdr8Buffer = 9,  // deferred only: the light buffer is ldr8 (SPEC 3.7)
+  kConstantCount = 10,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

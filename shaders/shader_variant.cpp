@@ -33,6 +33,10 @@ const std::vector<MutantName>& mutantNames() {
        "a mixed light demoted in SPEC 5.3 is lit in real time as well as baked"},
       {Mutant::LegacyFalloffBaked, "legacy-falloff-baked",
        "lights with bake_falloff inverse_squared are baked with the legacy falloff (SPEC 3.6)"},
+      {Mutant::UnclampedLdrDecode, "unclamped-ldr-decode",
+       "the ldr8 light buffer decodes -log2(x) without max(x, 1/255), so a dark texel decodes to infinity (SPEC 3.7)"},
+      {Mutant::PointVolumeOutsideOnly, "point-volume-outside-only",
+       "sphere light volumes drawn front faces with depth test LESS_OR_EQUAL: nothing lit with the camera inside (SPEC 3.7)"},
   };
   return names;
 }

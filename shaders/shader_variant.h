@@ -34,6 +34,10 @@ enum class Mutant : int {
   // wrong (conformance/cpu_mutants.h).
   DemotedLightStillLit = 15,       // a demoted mixed light is packed and lit in real time besides its bake (SPEC 5.3)
   LegacyFalloffBaked = 16,         // lights with inverse_squared bake_falloff baked with the legacy falloff (SPEC 3.6)
+  UnclampedLdrDecode = 17,         // shader: the ldr8 composite decodes -log2(x) without max(x, 1/255) (SPEC 3.7)
+  // Pipeline-state mutant: the backends draw icosphere light volumes front
+  // faces with depth test LESS_OR_EQUAL when they see it (no GLSL change).
+  PointVolumeOutsideOnly = 18,     // point (and sphere-shaped spot) volumes drawn without the camera-inside handling (SPEC 3.7)
 };
 
 struct MutantName {

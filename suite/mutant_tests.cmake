@@ -24,7 +24,9 @@ set(mutant_killers
   "shadow-mask-channel-off-by-one=shadowmask/four-overlapping-mixed.json,shadowmask/far-apart-share-channel.json"
   "shadow-strength-ignored=shadowmask/strength-0-half-1.json"
   "demoted-light-still-lit=shadowmask/fifth-overlapping-demoted.json"
-  "legacy-falloff-baked=baked/spot-directional-no-range.json,baked/shadows-box-on-plane.json")
+  "legacy-falloff-baked=baked/spot-directional-no-range.json,baked/shadows-box-on-plane.json"
+  "unclamped-ldr-decode=deferred/ldr8-sums.json"
+  "point-volume-outside-only=deferred/camera-inside-point-volume.json,deferred/camera-inside-wide-spot-volume.json")
 foreach(entry ${mutant_killers})
   string(REPLACE "=" ";" mutant_parts ${entry})
   list(GET mutant_parts 0 mutant)

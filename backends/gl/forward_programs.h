@@ -1,9 +1,8 @@
-// The forward program for OpenGL: the GLSL 330 that SPIRV-Cross made of the
-// Vulkan SPIR-V (shaders/embedded_spirv.h), with each specialization
-// constant defined as the SPIRV_CROSS_CONSTANT_ID_n macro it became. One
-// program per set of constants, linked on first use; the uniform blocks are
-// bound by name to the bindings the Vulkan layout uses (0 frame, 1 object),
-// and the baked maps' samplers to texture units 0 (lightmap) and 1 (mask).
+// The forward program for OpenGL (program_builder.h makes it from the GLSL
+// 330 of the Vulkan SPIR-V). One program per set of constants, linked on
+// first use; the uniform blocks are bound by name to the bindings the Vulkan
+// layout uses (0 frame, 1 object), and the baked maps' samplers to texture
+// units 0 (lightmap) and 1 (mask).
 #pragma once
 
 #include "backends/gl/gl_objects.h"
@@ -26,7 +25,6 @@ class ForwardPrograms {
 
  private:
   GlName build(const shaders::ConstantValues& constants) const;
-  GlName compile(GLenum stage, const std::string& source, const char* what) const;
 
   const GlFunctions& gl_;
   std::map<shaders::ConstantValues, GlName> programs_;

@@ -1,12 +1,12 @@
 #include "backends/gl/gl_backend.h"
 
 #include "backends/gl/baked_textures.h"
+#include "backends/gl/deferred_renderer.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/gl_context.h"
 #include "backends/gl/gl_objects.h"
 #include "backends/gl/probe_in_child.h"
-#include "backends/packed_geometry.h"
-#include "lighting/gpu_packing.h"
+#include "backends/gl/scene_draws.h"
 
 #include <chrono>
 #include <cstring>
@@ -26,10 +26,9 @@ std::string glString(const GlFunctions& gl, GLenum name) {
 }
 
 // The renderer: an FBO with an RGBA32F colour and a 32-bit float depth
-// renderbuffer, the scene's geometry in one vertex and one index buffer, two
-// uniform buffers (the frame block; the object blocks at the driver's offset
-// alignment, bound per draw with glBindBufferRange), and the baked maps as
-// textures (baked_textures.h), bound per draw.
+// renderbuffer that every frame ends in, the scene's objects as draws
+// (scene_draws.h) with their baked maps (baked_textures.h), drawn forward
+// into that FBO, or deferred (deferred_renderer.h) with a composite into it.
 class GlBackend final : public Backend {
  public:
   GlBackend(const ContextFactory& makeContext, const BackendOptions& options)
@@ -46,6 +45,8 @@ class GlBackend final : public Backend {
                               "' (the driver is missing, or another was already loaded in this process)");
     programs_.emplace(gl_);
     bakedTextures_.emplace(gl_);
+    sceneDraws_.emplace(gl_);
+    deferred_.emplace(gl_, options.variant.mutant);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
     // its counter 0 bits: it then has no clock, and draws are not timed.
     GLint timerBits = 0;
@@ -68,58 +69,42 @@ class GlBackend final : public Backend {
 
   void preparePipeline(const lighting::Frame& frame) override {
     context_->makeCurrent();
-    programs_->program(shaders::constantValues(frame.features, options_.variant));
+    const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
+    if (deferred(frame))
+      deferred_->programs(constants);
+    else
+      programs_->program(constants);
   }
 
   void draw(const lighting::Frame& frame) override {
     context_->makeCurrent();
     lastDrawMilliseconds_.reset();
-    const GLuint program = programs_->program(shaders::constantValues(frame.features, options_.variant));
+    const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
+    const bool isDeferred = deferred(frame);
+    const GLuint forwardProgram = isDeferred ? 0 : programs_->program(constants);
+    const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(constants) : DeferredProgramSet{};
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
-    ensureGeometry(frame);
+    sceneDraws_->update(frame);
     bakedTextures_->update(*frame.prepared);  // before the timed draws: uploads are not drawing
-    writeUniforms(frame);
-
-    gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
-    gl_.glViewport(0, 0, width_, height_);
-    // SPEC 1: depth LESS, back faces culled. OpenGL's window y points up like
-    // lighting::CameraView's NDC, so the meshes' counter-clockwise front
-    // faces stay counter-clockwise; SPIRV-Cross mapped clip z to -1..1.
-    gl_.glEnable(GL_DEPTH_TEST);
-    gl_.glDepthFunc(GL_LESS);
-    gl_.glDepthMask(GL_TRUE);
-    gl_.glEnable(GL_CULL_FACE);
-    gl_.glCullFace(GL_BACK);
-    gl_.glFrontFace(GL_CCW);
-    gl_.glDisable(GL_BLEND);
-    const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // value 0 (SPEC 6), alpha 1 (SPEC 8)
-    const float farDepth = 1.0f;
-    gl_.glClearBufferfv(GL_COLOR, 0, background);
-    gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    if (isDeferred)
+      deferred_->beginFrame(frame, width_, height_);  // binds and clears the G-buffer
+    else
+      clearForward();
     // The query encloses the draws. It begins after the clears on purpose:
     // Mesa binds a newly bound framebuffer to the driver only at the first
     // clear or draw, and llvmpipe bins a GL_TIME_ELAPSED query's start into
     // the framebuffer bound when it begins; begun before the first clear into
     // a new framebuffer, the start lands in the old one, never runs, and the
-    // result is the whole CLOCK_MONOTONIC reading (measured: 4.4e6 ms).
+    // result is the whole CLOCK_MONOTONIC reading (measured: 4.4e6 ms). The
+    // deferred path's later framebuffers are cleared or drawn into inside it.
     const auto queryStart = std::chrono::steady_clock::now();
     if (timer_.get()) gl_.glBeginQuery(GL_TIME_ELAPSED, timer_.get());
-
-    gl_.glUseProgram(program);
-    gl_.glBindVertexArray(vertexArray_.get());
-    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.get(), 0,
-                          sizeof(lighting::GpuFrameBlock));
-    for (std::size_t o = 0; o < objects_.size(); ++o) {
-      const ObjectRange& range = objects_[o];
-      if (range.indexCount == 0) continue;
-      gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kObjectBlockBinding, objectUniforms_.get(),
-                            GLintptr(o * objectStride_), sizeof(lighting::GpuObjectBlock));
-      bakedTextures_->bind(int(o));
-      gl_.glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT,
-                                   reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t)),
-                                   range.vertexOffset);
+    if (isDeferred) {
+      deferred_->drawFrame(deferredPrograms, *sceneDraws_, *bakedTextures_, framebuffer_.get());
+    } else {
+      gl_.glUseProgram(forwardProgram);
+      sceneDraws_->drawObjects(*bakedTextures_);
     }
-    gl_.glBindVertexArray(0);
     if (timer_.get()) gl_.glEndQuery(GL_TIME_ELAPSED);
     gl_.glFinish();  // draw() returns when the image is complete, as on Vulkan
     const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
@@ -185,53 +170,27 @@ class GlBackend final : public Backend {
     gl_.check("creating the RGBA32F framebuffer");
   }
 
-  void ensureGeometry(const lighting::Frame& frame) {
-    if (scene_ == frame.prepared) return;
-    const PackedGeometry packed = packGeometry(*frame.prepared);
-    vertexArray_ = makeVertexArray(gl_);
-    vertices_ = makeBuffer(gl_);
-    indices_ = makeBuffer(gl_);
-    gl_.glBindVertexArray(vertexArray_.get());
-    gl_.glBindBuffer(GL_ARRAY_BUFFER, vertices_.get());
-    gl_.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(packed.vertices.size() * sizeof(lighting::GpuVertex)),
-                     packed.vertices.data(), GL_STATIC_DRAW);
-    gl_.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.get());
-    gl_.glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(packed.indices.size() * sizeof(std::uint32_t)),
-                     packed.indices.data(), GL_STATIC_DRAW);
-    // Locations 0 and 1, as forward.vert declares them.
-    gl_.glEnableVertexAttribArray(0);
-    gl_.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(lighting::GpuVertex),
-                              reinterpret_cast<const void*>(offsetof(lighting::GpuVertex, position)));
-    gl_.glEnableVertexAttribArray(1);
-    gl_.glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(lighting::GpuVertex),
-                              reinterpret_cast<const void*>(offsetof(lighting::GpuVertex, normal)));
-    gl_.glBindVertexArray(0);
-    objects_ = packed.objects;
-    scene_ = frame.prepared;
-    gl_.check("uploading the scene's geometry");
+  static bool deferred(const lighting::Frame& frame) {
+    return frame.scene().pipeline.path == lighting::RenderPath::Deferred;
   }
 
-  void writeUniforms(const lighting::Frame& frame) {
-    if (!frameUniforms_.get()) {
-      frameUniforms_ = makeBuffer(gl_);
-      objectUniforms_ = makeBuffer(gl_);
-      GLint alignment = 256;
-      gl_.glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
-      objectStride_ = (sizeof(lighting::GpuObjectBlock) + std::size_t(alignment) - 1) / std::size_t(alignment) *
-                      std::size_t(alignment);
-    }
-    const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame);
-    gl_.glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.get());
-    gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
-    std::vector<unsigned char> objects(std::max<std::size_t>(objects_.size(), 1) * objectStride_);
-    for (std::size_t o = 0; o < objects_.size(); ++o) {
-      const lighting::GpuObjectBlock object = lighting::packObjectBlock(frame, int(o));
-      std::memcpy(&objects[o * objectStride_], &object, sizeof(object));
-    }
-    gl_.glBindBuffer(GL_UNIFORM_BUFFER, objectUniforms_.get());
-    gl_.glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(objects.size()), objects.data(), GL_DYNAMIC_DRAW);
-    gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
-    gl_.check("writing the uniform buffers");
+  // SPEC 1: depth LESS, back faces culled. OpenGL's window y points up like
+  // lighting::CameraView's NDC, so the meshes' counter-clockwise front faces
+  // stay counter-clockwise; SPIRV-Cross mapped clip z to -1..1.
+  void clearForward() {
+    gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
+    gl_.glViewport(0, 0, width_, height_);
+    gl_.glEnable(GL_DEPTH_TEST);
+    gl_.glDepthFunc(GL_LESS);
+    gl_.glDepthMask(GL_TRUE);
+    gl_.glEnable(GL_CULL_FACE);
+    gl_.glCullFace(GL_BACK);
+    gl_.glFrontFace(GL_CCW);
+    gl_.glDisable(GL_BLEND);
+    const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // value 0 (SPEC 6), alpha 1 (SPEC 8)
+    const float farDepth = 1.0f;
+    gl_.glClearBufferfv(GL_COLOR, 0, background);
+    gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
   }
 
   BackendOptions options_;
@@ -240,14 +199,11 @@ class GlBackend final : public Backend {
   GlFunctions gl_;
   std::optional<ForwardPrograms> programs_;
   std::optional<BakedTextures> bakedTextures_;
+  std::optional<SceneDraws> sceneDraws_;
+  std::optional<DeferredRenderer> deferred_;
   GlName color_, depth_, framebuffer_;
-  GlName vertexArray_, vertices_, indices_;
-  GlName frameUniforms_, objectUniforms_;
   GlName timer_;  // the GL_TIME_ELAPSED query; none when the driver's timer has 0 bits
   std::optional<double> lastDrawMilliseconds_;
-  std::size_t objectStride_ = 0;
-  std::vector<ObjectRange> objects_;
-  std::shared_ptr<const lighting::PreparedScene> scene_;
   int width_ = 0, height_ = 0;
   bool drawn_ = false;
 };

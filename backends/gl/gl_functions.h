@@ -77,7 +77,11 @@ namespace backends::gl {
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                           \
   X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                       \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                             \
-  X(PFNGLTEXPARAMETERIPROC, glTexParameteri)
+  X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                       \
+  X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)         \
+  X(PFNGLBLENDFUNCPROC, glBlendFunc)                               \
+  X(PFNGLBLENDEQUATIONPROC, glBlendEquation)                       \
+  X(PFNGLDRAWARRAYSPROC, glDrawArrays)
 
 // Entry points of later GL versions than the 3.3 the backend needs: null when
 // the library has none. Mesa hands out a pointer for every name it knows,

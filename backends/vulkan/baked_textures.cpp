@@ -46,24 +46,8 @@ void writeSet(const vk::raii::Device& device, vk::DescriptorSet set, BoundMap li
   device.updateDescriptorSets(writes, {});
 }
 
-vk::raii::DescriptorPool createPool(const vk::raii::Device& device, std::uint32_t sets) {
-  const vk::DescriptorPoolSize size{vk::DescriptorType::eCombinedImageSampler, 2 * sets};
-  // FreeDescriptorSet: vk::raii::DescriptorSet frees itself when destroyed.
-  return vk::raii::DescriptorPool(device, vk::DescriptorPoolCreateInfo{
-                                              .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                              .maxSets = sets,
-                                              .poolSizeCount = 1,
-                                              .pPoolSizes = &size});
-}
-
-std::vector<vk::raii::DescriptorSet> allocateSets(const vk::raii::Device& device, const vk::raii::DescriptorPool& pool,
-                                                  const vk::raii::DescriptorSetLayout& layout, std::uint32_t count) {
-  const std::vector<vk::DescriptorSetLayout> layouts(count, *layout);
-  vk::raii::DescriptorSets sets(device, vk::DescriptorSetAllocateInfo{.descriptorPool = *pool,
-                                                                      .descriptorSetCount = count,
-                                                                      .pSetLayouts = layouts.data()});
-  return std::vector<vk::raii::DescriptorSet>(std::make_move_iterator(sets.begin()), std::make_move_iterator(sets.end()));
-}
+// One set holds the two maps (lightmapTexture, shadowMaskTexture).
+constexpr std::array<vk::DescriptorPoolSize, 1> kMapsPerSet{{{vk::DescriptorType::eCombinedImageSampler, 2}}};
 
 }  // namespace
 
@@ -85,9 +69,8 @@ BakedMapDefaults::BakedMapDefaults(const VulkanDevice& device, const vk::raii::D
       noShadowMask_(createSampledMapImage(device, {1, 1})) {
   const std::array<TextureUpload, 2> uploads{{{&noLightmap_, kNoLightmapTexel}, {&noShadowMask_, kNoShadowMaskTexel}}};
   uploadTextures(device, uploads);
-  pool_ = createPool(device.device, 1);
-  set_ = std::move(allocateSets(device.device, pool_, layout, 1).front());
-  writeSet(device.device, *set_, {&noLightmap_, &nearest_}, {&noShadowMask_, &nearest_});
+  sets_ = DescriptorSets(device.device, layout, kMapsPerSet, 1);
+  writeSet(device.device, *sets_.sets.front(), {&noLightmap_, &nearest_}, {&noShadowMask_, &nearest_});
 }
 
 void requireFilterableMapFormat(const VulkanDevice& device) {
@@ -151,8 +134,7 @@ SceneBakedTextures::SceneBakedTextures(const VulkanDevice& device, const BakedMa
   }
   uploadTextures(device, uploads);
 
-  pool_ = createPool(device.device, withMaps);
-  ownSets_ = allocateSets(device.device, pool_, layout, withMaps);
+  ownSets_ = DescriptorSets(device.device, layout, kMapsPerSet, std::uint32_t(withMaps));
   std::size_t next = 0;
   for (std::size_t o = 0; o < objectCount; ++o) {
     if (!bakes[o]) continue;
@@ -161,7 +143,7 @@ SceneBakedTextures::SceneBakedTextures(const VulkanDevice& device, const BakedMa
                                                : BoundMap{&defaults.noLightmap(), &defaults.nearest()};
     const BoundMap shadowMask = im.shadowMask >= 0 ? BoundMap{&images_[im.shadowMask], &defaults.bilinear()}
                                                    : BoundMap{&defaults.noShadowMask(), &defaults.nearest()};
-    sets_[o] = *ownSets_[next++];
+    sets_[o] = *ownSets_.sets[next++];
     writeSet(device.device, sets_[o], lightmap, shadowMask);
   }
   uploadMilliseconds_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

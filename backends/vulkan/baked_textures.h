@@ -10,6 +10,7 @@
 // keep the set valid.
 #pragma once
 
+#include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
 #include "lighting/frame.h"
 
@@ -36,15 +37,14 @@ class BakedMapDefaults {
   const vk::raii::Sampler& nearest() const { return nearest_; }
   const DeviceImage& noLightmap() const { return noLightmap_; }
   const DeviceImage& noShadowMask() const { return noShadowMask_; }
-  vk::DescriptorSet noMapsSet() const { return *set_; }
+  vk::DescriptorSet noMapsSet() const { return *sets_.sets.front(); }
 
  private:
   vk::raii::Sampler bilinear_{nullptr};
   vk::raii::Sampler nearest_{nullptr};
   DeviceImage noLightmap_;
   DeviceImage noShadowMask_;
-  vk::raii::DescriptorPool pool_{nullptr};
-  vk::raii::DescriptorSet set_{nullptr};
+  DescriptorSets sets_;  // the one set pointing at the 1x1 defaults
 };
 
 // Throws NotSupportedError, saying why, when the device cannot sample
@@ -77,8 +77,7 @@ class SceneBakedTextures {
   std::shared_ptr<const lighting::BakedLighting> baked_;
   // Declared before the sets, so the sets are freed before what they point at.
   std::vector<DeviceImage> images_;
-  vk::raii::DescriptorPool pool_{nullptr};
-  std::vector<vk::raii::DescriptorSet> ownSets_;
+  DescriptorSets ownSets_;  // one per object with maps
   std::vector<vk::DescriptorSet> sets_;  // per object: its own set or the defaults' one
   double uploadMilliseconds_ = 0;
 };

@@ -1,6 +1,7 @@
 #include "backends/vulkan/forward_pipeline.h"
 
 #include "backends/vulkan/baked_textures.h"
+#include "backends/vulkan/scene_geometry.h"
 #include "lighting/gpu_packing.h"
 #include "shaders/embedded_spirv.h"
 
@@ -53,16 +54,8 @@ vk::raii::Pipeline ForwardPipelines::create(const shaders::ConstantValues& const
       {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fragment_, .pName = "main", .pSpecializationInfo = &specialization},
   }};
 
-  const vk::VertexInputBindingDescription binding{.binding = 0, .stride = sizeof(lighting::GpuVertex),
-                                                  .inputRate = vk::VertexInputRate::eVertex};
-  const std::array<vk::VertexInputAttributeDescription, 2> attributes{{
-      {.location = 0, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = offsetof(lighting::GpuVertex, position)},
-      {.location = 1, .binding = 0, .format = vk::Format::eR32G32B32Sfloat, .offset = offsetof(lighting::GpuVertex, normal)},
-  }};
-  const vk::PipelineVertexInputStateCreateInfo vertexInput{.vertexBindingDescriptionCount = 1,
-                                                           .pVertexBindingDescriptions = &binding,
-                                                           .vertexAttributeDescriptionCount = attributes.size(),
-                                                           .pVertexAttributeDescriptions = attributes.data()};
+  const SceneVertexInput sceneVertices;
+  const vk::PipelineVertexInputStateCreateInfo vertexInput = sceneVertices.state();
   const vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = vk::PrimitiveTopology::eTriangleList};
   const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
   // SPEC 1: back faces culled, one sample at the pixel centre, depth LESS.

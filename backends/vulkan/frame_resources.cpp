@@ -29,25 +29,17 @@ UniformBuffers::UniformBuffers(const VulkanDevice& device, const vk::raii::Descr
       objectStride_(roundUp(sizeof(lighting::GpuObjectBlock), device.limits.minUniformBufferOffsetAlignment)),
       frame_(device, sizeof(lighting::GpuFrameBlock), vk::BufferUsageFlagBits::eUniformBuffer),
       objects_(device, objectStride_ * objectCapacity_, vk::BufferUsageFlagBits::eUniformBuffer) {
-  const std::array<vk::DescriptorPoolSize, 2> sizes{{{vk::DescriptorType::eUniformBuffer, 1},
-                                                     {vk::DescriptorType::eUniformBufferDynamic, 1}}};
-  pool_ = vk::raii::DescriptorPool(device.device,
-                                   vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                                .maxSets = 1,
-                                                                .poolSizeCount = sizes.size(),
-                                                                .pPoolSizes = sizes.data()});
-  const vk::DescriptorSetLayout setLayout = *layout;
-  vk::raii::DescriptorSets sets(device.device, vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
-                                                                             .descriptorSetCount = 1,
-                                                                             .pSetLayouts = &setLayout});
-  set_ = std::move(sets.front());
+  const std::array<vk::DescriptorPoolSize, 2> perSet{{{vk::DescriptorType::eUniformBuffer, 1},
+                                                      {vk::DescriptorType::eUniformBufferDynamic, 1}}};
+  descriptors_ = DescriptorSets(device.device, layout, perSet, 1);
+  const vk::DescriptorSet set = *descriptors_.sets.front();
 
   const vk::DescriptorBufferInfo frameInfo{*frame_.buffer, 0, sizeof(lighting::GpuFrameBlock)};
   const vk::DescriptorBufferInfo objectInfo{*objects_.buffer, 0, sizeof(lighting::GpuObjectBlock)};
   const std::array<vk::WriteDescriptorSet, 2> writes{{
-      {.dstSet = *set_, .dstBinding = 0, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
+      {.dstSet = set, .dstBinding = 0, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
        .pBufferInfo = &frameInfo},
-      {.dstSet = *set_, .dstBinding = 1, .descriptorCount = 1,
+      {.dstSet = set, .dstBinding = 1, .descriptorCount = 1,
        .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &objectInfo},
   }};
   device.device.updateDescriptorSets(writes, {});

@@ -4,6 +4,7 @@
 // that points at them. Rebuilt only when the size or the object count grows.
 #pragma once
 
+#include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
 #include "lighting/gpu_packing.h"
 
@@ -22,7 +23,7 @@ class UniformBuffers {
   UniformBuffers(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout, std::size_t objectCapacity);
 
   std::size_t objectCapacity() const { return objectCapacity_; }
-  const vk::raii::DescriptorSet& descriptorSet() const { return set_; }
+  const vk::raii::DescriptorSet& descriptorSet() const { return descriptors_.sets.front(); }
   std::uint32_t objectOffset(std::size_t object) const { return std::uint32_t(object * objectStride_); }
   void write(const lighting::GpuFrameBlock& frame) { frame_.write(std::span(&frame, 1)); }
   void write(std::size_t object, const lighting::GpuObjectBlock& block) {
@@ -34,8 +35,7 @@ class UniformBuffers {
   vk::DeviceSize objectStride_;
   HostBuffer frame_;
   HostBuffer objects_;
-  vk::raii::DescriptorPool pool_{nullptr};
-  vk::raii::DescriptorSet set_{nullptr};
+  DescriptorSets descriptors_;  // the one set pointing at the buffers
 };
 
 }  // namespace backends::vulkan

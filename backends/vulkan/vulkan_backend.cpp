@@ -1,6 +1,7 @@
 #include "backends/vulkan/vulkan_backend.h"
 
 #include "backends/vulkan/baked_textures.h"
+#include "backends/vulkan/deferred_renderer.h"
 #include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/forward_pipeline.h"
 #include "backends/vulkan/frame_resources.h"
@@ -44,6 +45,11 @@ class VulkanBackend final : public Backend {
   DeviceInfo device() const override { return device_.info; }
 
   void preparePipeline(const lighting::Frame& frame) override {
+    if (isDeferred(frame)) {
+      deferred().preparePipelines(frame);
+      checkValidation("creating the deferred pipelines");
+      return;
+    }
     pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
     checkValidation("creating the forward pipeline");
   }
@@ -67,6 +73,11 @@ class VulkanBackend final : public Backend {
       maps_.emplace(device_, mapDefaults_, pipelines_.mapsSetLayout(), frame.prepared);
       checkValidation("uploading the baked maps of " + frame.scene().sourcePath);
     }
+    const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
+    if (isDeferred(frame)) {
+      drawDeferred(frame, when);
+      return;
+    }
     const std::size_t objectCount = frame.scene().objects.size();
     if (!uniforms_ || uniforms_->objectCapacity() < objectCount) {
       uniforms_.reset();
@@ -76,7 +87,6 @@ class VulkanBackend final : public Backend {
     for (std::size_t o = 0; o < objectCount; ++o) uniforms_->write(o, lighting::packObjectBlock(frame, int(o)));
 
     const vk::raii::Pipeline& pipeline = pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
-    const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
     submit(
         [&](const vk::raii::CommandBuffer& cb) {
           if (timestamps_) timestamps_->recordBegin(cb);
@@ -84,12 +94,7 @@ class VulkanBackend final : public Backend {
           if (timestamps_) timestamps_->recordEnd(cb);
         },
         when);
-    if (timestamps_) {
-      const double milliseconds = timestamps_->milliseconds();
-      checkValidation(when + " (reading its timestamps)");
-      lastDrawMilliseconds_ = milliseconds;
-    }
-    drawn_ = true;
+    finishDraw(when);
   }
 
   std::optional<double> lastDrawDeviceMilliseconds() const override { return lastDrawMilliseconds_; }
@@ -102,6 +107,42 @@ class VulkanBackend final : public Backend {
   }
 
  private:
+  static bool isDeferred(const lighting::Frame& frame) {
+    return frame.scene().pipeline.path == lighting::RenderPath::Deferred;
+  }
+
+  // Made on the first deferred frame: forward-only runs never build it.
+  DeferredRenderer& deferred() {
+    if (!deferred_) deferred_.emplace(device_, cache_, pipelines_.mapsSetLayout(), options_.variant);
+    return *deferred_;
+  }
+
+  // SPEC 3.7: G-buffer, light and composite passes in one command buffer,
+  // timed as a whole, into the same colour target as the forward pass.
+  void drawDeferred(const lighting::Frame& frame, const std::string& when) {
+    DeferredRenderer& renderer = deferred();
+    renderer.prepareFrame(frame);
+    checkValidation("preparing the deferred passes of " + frame.scene().sourcePath);
+    submit(
+        [&](const vk::raii::CommandBuffer& cb) {
+          if (timestamps_) timestamps_->recordBegin(cb);
+          renderer.record(cb, *geometry_, *maps_, *target_);
+          if (timestamps_) timestamps_->recordEnd(cb);
+        },
+        when);
+    finishDraw(when);
+  }
+
+  // After a draw's submission: its device time, and the target is ready to read back.
+  void finishDraw(const std::string& when) {
+    if (timestamps_) {
+      const double milliseconds = timestamps_->milliseconds();
+      checkValidation(when + " (reading its timestamps)");
+      lastDrawMilliseconds_ = milliseconds;
+    }
+    drawn_ = true;
+  }
+
   void recordForwardPass(const vk::raii::CommandBuffer& cb, const vk::raii::Pipeline& pipeline) const {
     const vk::Extent2D extent = target_->color.extent;
     // Whatever the last submission did with the targets (a readback copy, the
@@ -200,6 +241,7 @@ class VulkanBackend final : public Backend {
   std::optional<SceneGeometry> geometry_;
   std::optional<SceneBakedTextures> maps_;
   std::optional<UniformBuffers> uniforms_;
+  std::optional<DeferredRenderer> deferred_;
   std::optional<DrawTimestamps> timestamps_;  // empty when the queue writes no timestamps
   std::optional<double> lastDrawMilliseconds_;
   bool drawn_ = false;

@@ -133,8 +133,13 @@ VulkanDevice::VulkanDevice(const VulkanInstance& instance, const std::string& se
 
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queueInfo{.queueFamilyIndex = queueFamily, .queueCount = 1, .pQueuePriorities = &priority};
+  depthClamp = physical.getFeatures().depthClamp == VK_TRUE;
+  const vk::PhysicalDeviceFeatures features{.depthClamp = depthClamp ? VK_TRUE : VK_FALSE};
   vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .dynamicRendering = VK_TRUE};
-  const vk::DeviceCreateInfo deviceInfo{.pNext = &features13, .queueCreateInfoCount = 1, .pQueueCreateInfos = &queueInfo};
+  const vk::DeviceCreateInfo deviceInfo{.pNext = &features13,
+                                        .queueCreateInfoCount = 1,
+                                        .pQueueCreateInfos = &queueInfo,
+                                        .pEnabledFeatures = &features};
   try {
     device = vk::raii::Device(physical, deviceInfo);
   } catch (const vk::SystemError& e) {

@@ -48,6 +48,9 @@ struct VulkanDevice {
   vk::PhysicalDeviceLimits limits;
   std::uint32_t queueFamily = 0;
   std::uint32_t timestampValidBits = 0;  // of the queue family; 0: it writes no timestamps
+  // depthClamp is enabled whenever the device has it: the deferred light pass
+  // clamps volumes that reach past the far plane instead of clipping them.
+  bool depthClamp = false;
   vk::raii::Device device{nullptr};
   vk::raii::Queue queue{nullptr};
 

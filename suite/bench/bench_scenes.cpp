@@ -1,17 +1,30 @@
 #include "suite/bench/bench_scenes.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace bench {
 
 using namespace lighting;
 
+std::optional<lighting::DeferredBuffer> deferredBufferOf(FrameMode mode) {
+  switch (mode) {
+    case FrameMode::DeferredHdr32: return DeferredBuffer::Hdr32;
+    case FrameMode::DeferredHdr16: return DeferredBuffer::Hdr16;
+    case FrameMode::DeferredLdr8: return DeferredBuffer::Ldr8;
+    default: return std::nullopt;
+  }
+}
+
 std::string_view modeName(FrameMode mode) {
   switch (mode) {
     case FrameMode::AllLights: return "all-lights";
     case FrameMode::PerObject: return "per-object";
     case FrameMode::Legacy4x4: return "legacy-4+4";
+    case FrameMode::DeferredHdr32: return "deferred-hdr32";
+    case FrameMode::DeferredHdr16: return "deferred-hdr16";
+    case FrameMode::DeferredLdr8: return "deferred-ldr8";
   }
   return "?";
 }
@@ -66,6 +79,10 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
   if (spec.mode == FrameMode::Legacy4x4) {
     s.pipeline.profile = Profile::Legacy;
     s.pipeline.lightsPerObject = true;  // always on in the legacy profile
+  }
+  if (const auto buffer = deferredBufferOf(spec.mode)) {
+    s.pipeline.path = RenderPath::Deferred;
+    s.pipeline.deferredBuffer = *buffer;
   }
   const double x0 = -fieldX / 2, z0 = -kFieldZ / 2;
   const double tileX = fieldX / spec.tileColumns, tileZ = kFieldZ / spec.tileRows;

@@ -9,6 +9,7 @@
 
 #include "lighting/scene.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -19,9 +20,16 @@ enum class FrameMode {
   AllLights,   // srp forward, every kept light per pixel
   PerObject,   // srp forward, per-object lists (at most 8 lights per object)
   Legacy4x4,   // legacy profile: lists always on, 4 pixel + 4 vertex lights, 16 kept lights
+  // srp deferred (SPEC 3.7): every kept light as one volume draw into the
+  // light buffer of that format (lists do not apply to deferred)
+  DeferredHdr32,
+  DeferredHdr16,
+  DeferredLdr8,
 };
 
 std::string_view modeName(FrameMode mode);
+// The light buffer of a deferred mode; nullopt for the forward modes.
+std::optional<lighting::DeferredBuffer> deferredBufferOf(FrameMode mode);
 
 struct FieldSpec {
   int width = 1280, height = 720;

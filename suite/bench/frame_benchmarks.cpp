@@ -1,11 +1,13 @@
 // The frame benchmarks of one backend combination (SPEC 9, issue 7). Names
 // and counters: docs/bench-format.md. What runs:
 //   frame/<b>/lights64-1280x720/<mode>           mode: all-lights, per-object, legacy-4+4, and each
-//                                                with the full shader (full-shader = all-lights)
+//                                                with the full shader (full-shader = all-lights);
+//                                                deferred-hdr32, deferred-hdr16, deferred-ldr8
 //   frame_readback/<b>/lights64-1280x720/<mode>
 //   pipeline/<b>/lights64-1280x720/<mode>         preparePipeline with an empty cache
 //   frame/<b>/curve-lights/all-lights/<n>         n = 1, 2, 4 ... 256 lights (the cut keeps 64), 640x360
 //   frame/<b>/curve-lights/per-object/<n>
+//   frame/<b>/curve-lights/deferred-<buffer>/<n>  hdr32, hdr16, ldr8: deferred against forward
 //   frame/<b>/curve-resolution/all-lights/<WxH>   256x256, 640x360, 1280x720, 1920x1080, 64 lights
 //   frame/<b>/curve-objects/all-lights/<n>        n = 1, 4, 16, 64, 256 tiles, 64 lights, 640x360
 //   frame/<b>/<group>.<name>/<mode>               with --suite_scenes: every suite scene, frame 0
@@ -14,7 +16,7 @@
 //   frame/<b>/lightmap-1280x720/realtime          the same lights in real time
 //   frame/<b>/lightmap-shadow-1280x720/<mode>     the same with one shadowed light: realtime, lightmap-64, -512
 // softpipe (about 150 times slower than llvmpipe) runs a scaled-down set: the
-// 64-light field in five modes (not full-shader all-lights), `frame` only, one iteration
+// 64-light field in every mode but full-shader all-lights, `frame` only, one iteration
 // times 3 repetitions, and the curves at 256x144 (resolution: 128x72 to
 // 512x288), so that one softpipe process stays near 2 minutes.
 #include "suite/bench/frame_benchmarks.h"
@@ -27,6 +29,7 @@
 #include "reference/reference_renderer.h"
 #include "reference/world_triangles.h"
 #include "suite/bench/bench_scenes.h"
+#include "suite/bench/deferred_load.h"
 #include "suite/bench/image_error.h"
 #include "suite/bench/lighting_cost.h"
 
@@ -86,6 +89,8 @@ struct FrameLoad {
   // one primary ray per sample on a grid of at most 256x256 samples (the
   // reference's BVH); background pixels count 0. Overdraw (a pixel shaded
   // twice before the depth test hides it) and vertex lights are not counted.
+  // Deferred (SPEC 3.7): the light volumes that shade the pixel
+  // (DeferredCoverage), not the lights of its object.
   double lightsPerPixel = 0;
   int keptLights = 0;
 };
@@ -98,6 +103,8 @@ FrameLoad loadOf(const Frame& frame) {
   const int objects = int(frame.scene().objects.size());
   std::vector<double> perObject(std::size_t(objects), 0.0);
   for (int o = 0; o < objects; ++o) perObject[std::size_t(o)] = double(frame.lightsForObject(o).perPixel.size());
+  std::optional<DeferredCoverage> deferred;
+  if (frame.scene().pipeline.path == RenderPath::Deferred) deferred.emplace(frame);
 
   const reference::WorldTriangles world = reference::buildWorldTriangles(*frame.prepared);
   const reference::Bvh bvh(world);
@@ -108,7 +115,8 @@ FrameLoad loadOf(const Frame& frame) {
       const Ray ray = frame.view.rayThroughPixel(i + 0.5, j + 0.5);
       const double cosine = glm::dot(ray.direction, frame.view.forward);
       const auto hit = bvh.nearestHit(ray, frame.view.camera.nearPlane / cosine, frame.view.camera.farPlane / cosine);
-      if (hit) sum += perObject[std::size_t(world.triangles[std::size_t(hit->triangle)].object)];
+      if (hit && deferred) sum += deferred->volumesShading(ray, hit->t);
+      else if (hit) sum += perObject[std::size_t(world.triangles[std::size_t(hit->triangle)].object)];
       samples += 1;
     }
   }
@@ -401,8 +409,10 @@ struct ModeBenches {
 
 // The modes of the speed-against-error plot: each profile and light path as
 // shipped (specialised shader), and with the full shader, which shows what
-// specialization buys. softpipe skips the slowest, full-shader all-lights
-// (some 30 s a frame), and still has five.
+// specialization buys; the deferred path in each light buffer (SPEC 3.7),
+// whose error against the same ideal reference as all-lights is what the
+// buffer's format costs. softpipe skips the slowest, full-shader all-lights
+// (some 30 s a frame), and still has eight.
 struct ModeSpec {
   FrameMode scene;  // which field: all lights, per-object lists, legacy
   bool fullShader;
@@ -418,13 +428,26 @@ ModeBenches modeBenches(const Run& run) {
                                  {FrameMode::Legacy4x4, true, "legacy-4+4-full-shader"}};
   if (!run.slow) modes.insert(modes.begin() + 3, {FrameMode::AllLights, true, "full-shader"});
   if (run.settings.quick) modes.resize(2);
+  for (const FrameMode deferred : {FrameMode::DeferredHdr32, FrameMode::DeferredHdr16, FrameMode::DeferredLdr8})
+    modes.push_back({deferred, false, std::string(modeName(deferred))});
   ModeBenches benches;
   for (const ModeSpec& mode : modes) {
     FieldSpec spec;
     spec.mode = mode.scene;
     const std::string referenceKey = scene + (mode.scene == FrameMode::Legacy4x4 ? "/legacy" : "/srp");
-    const auto bench = makeBenchFrame(fieldScene(spec, scene + "-" + mode.name), mode.fullShader, referenceKey,
-                                      scene + "/" + mode.name);
+    std::shared_ptr<const BenchFrame> bench = makeBenchFrame(fieldScene(spec, scene + "-" + mode.name),
+                                                             mode.fullShader, referenceKey, scene + "/" + mode.name);
+    if (deferredBufferOf(mode.scene)) {
+      // The deferred modes share the srp reference of the forward field, made
+      // from that scene whichever mode runs first: a deferred scene's own
+      // reference includes its buffer's saturation (ldr8), which is part of
+      // the error a buffer costs.
+      auto withForwardReference = std::make_shared<BenchFrame>(*bench);
+      FieldSpec forward = spec;
+      forward.mode = FrameMode::AllLights;
+      withForwardReference->referencePrepared = prepareScene(fieldScene(forward, scene + "-forward-reference"));
+      bench = std::move(withForwardReference);
+    }
     checkKept(*bench);
     (mode.fullShader ? benches.full : benches.shipped).emplace_back(mode.name, bench);
     if (mode.name == "all-lights" || !(run.slow || run.settings.quick)) benches.pipeline.emplace_back(mode.name, bench);
@@ -541,8 +564,12 @@ void registerCurves(Registrar& r) {
 
   const std::vector<int> lightCounts =
       quick ? std::vector<int>{1, 64, 256} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128, 256};
+  // Deferred against forward along the light count: where the volumes
+  // (a few per pixel) overtake every kept light per pixel.
   std::vector<FrameMode> lightModes = {FrameMode::AllLights};
   if (!quick) lightModes.push_back(FrameMode::PerObject);
+  lightModes.push_back(FrameMode::DeferredHdr32);
+  if (!quick) lightModes.insert(lightModes.end(), {FrameMode::DeferredHdr16, FrameMode::DeferredLdr8});
   for (const FrameMode mode : lightModes) {
     for (const int n : lightCounts) {
       FieldSpec spec;

@@ -1,0 +1,68 @@
+#include "backends/gl/deferred_programs.h"
+
+#include "backends/gl/forward_programs.h"
+#include "backends/gl/program_builder.h"
+#include "shaders/embedded_spirv.h"
+
+namespace backends::gl {
+namespace {
+
+// Every G-buffer texture's sampler (shaders/deferred_data.glsl), in
+// GbufferTexture order.
+constexpr const char* kGbufferSamplers[kGbufferColourCount] = {"gbufferAlbedo", "gbufferNormal", "gbufferBase",
+                                                               "gbufferMask"};
+
+}  // namespace
+
+DeferredProgramSet DeferredPrograms::programs(const shaders::ConstantValues& constants) {
+  auto found = programs_.find(constants);
+  if (found == programs_.end()) found = programs_.emplace(constants, build(constants)).first;
+  return {found->second.gbuffer.get(), found->second.light.get(), found->second.composite.get()};
+}
+
+DeferredPrograms::Linked DeferredPrograms::build(const shaders::ConstantValues& constants) const {
+  Linked linked;
+  linked.gbuffer = buildGbuffer(constants);
+  linked.light = buildLight(constants);
+  linked.composite = buildComposite(constants);
+  gl_.glUseProgram(0);
+  gl_.check("linking the deferred programs");
+  return linked;
+}
+
+GlName DeferredPrograms::buildGbuffer(const shaders::ConstantValues& constants) const {
+  GlName program = linkProgram(gl_, shaders::forwardVertexGlsl330(), shaders::gbufferFragmentGlsl330(), constants,
+                               "the deferred G-buffer program");
+  bindUniformBlock(gl_, program.get(), "FrameBlock", kFrameBlockBinding);
+  bindUniformBlock(gl_, program.get(), "ObjectBlock", kObjectBlockBinding);
+  gl_.glUseProgram(program.get());
+  bindSampler(gl_, program.get(), "lightmapTexture", kLightmapTextureUnit);
+  bindSampler(gl_, program.get(), "shadowMaskTexture", kShadowMaskTextureUnit);
+  return program;
+}
+
+GlName DeferredPrograms::buildLight(const shaders::ConstantValues& constants) const {
+  GlName program = linkProgram(gl_, shaders::deferredLightVertexGlsl330(), shaders::deferredLightFragmentGlsl330(),
+                               constants, "the deferred light program");
+  bindUniformBlock(gl_, program.get(), "FrameBlock", kFrameBlockBinding);
+  bindUniformBlock(gl_, program.get(), "DeferredLightBlock", kDeferredLightBlockBinding);
+  bindUniformBlock(gl_, program.get(), "DeferredFrameBlock", kDeferredFrameBlockBinding);
+  gl_.glUseProgram(program.get());
+  for (int t = 0; t < kGbufferColourCount; ++t)
+    bindSampler(gl_, program.get(), kGbufferSamplers[t], kFirstGbufferTextureUnit + t);
+  return program;
+}
+
+GlName DeferredPrograms::buildComposite(const shaders::ConstantValues& constants) const {
+  GlName program = linkProgram(gl_, shaders::deferredCompositeVertexGlsl330(),
+                               shaders::deferredCompositeFragmentGlsl330(), constants,
+                               "the deferred composite program");
+  bindUniformBlock(gl_, program.get(), "DeferredFrameBlock", kDeferredFrameBlockBinding);
+  gl_.glUseProgram(program.get());
+  for (int t = 0; t < kGbufferColourCount; ++t)
+    bindSampler(gl_, program.get(), kGbufferSamplers[t], kFirstGbufferTextureUnit + t);
+  bindSampler(gl_, program.get(), "lightBuffer", kLightBufferTextureUnit);
+  return program;
+}
+
+}  // namespace backends::gl

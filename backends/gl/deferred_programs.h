@@ -1,0 +1,52 @@
+// The deferred path's programs for OpenGL (SPEC 3.7), made like the forward
+// program (program_builder.h), one set per set of constants (the frame's
+// features, with LDR8_BUFFER for the ldr8 light buffer), linked on first use:
+//   G-buffer:  forward.vert + gbuffer.frag; blocks and baked-map samplers
+//              exactly as the forward program binds them;
+//   light:     deferred_light.vert + .frag; FrameBlock (binding 0, for the
+//              view-projection), DeferredLightBlock (2), DeferredFrameBlock (3);
+//   composite: deferred_composite.vert + .frag; DeferredFrameBlock (3).
+// The G-buffer textures and the light buffer have texture units of their
+// own, after the baked maps' units 0 and 1, so no pass rebinds another's.
+#pragma once
+
+#include "backends/gl/gbuffer_targets.h"
+#include "backends/gl/gl_objects.h"
+#include "shaders/shader_constants.h"
+
+#include <map>
+
+namespace backends::gl {
+
+constexpr GLuint kDeferredLightBlockBinding = 2;
+constexpr GLuint kDeferredFrameBlockBinding = 3;
+// Texture unit of G-buffer texture t: kFirstGbufferTextureUnit + t.
+constexpr GLint kFirstGbufferTextureUnit = 2;
+constexpr GLint kLightBufferTextureUnit = kFirstGbufferTextureUnit + kGbufferColourCount;
+
+struct DeferredProgramSet {
+  GLuint gbuffer = 0;
+  GLuint light = 0;
+  GLuint composite = 0;
+};
+
+class DeferredPrograms {
+ public:
+  explicit DeferredPrograms(const GlFunctions& gl) : gl_(gl) {}
+  // The programs for `constants`; throws DriverError with the compiler's log.
+  DeferredProgramSet programs(const shaders::ConstantValues& constants);
+
+ private:
+  struct Linked {
+    GlName gbuffer, light, composite;
+  };
+  Linked build(const shaders::ConstantValues& constants) const;
+  GlName buildGbuffer(const shaders::ConstantValues& constants) const;
+  GlName buildLight(const shaders::ConstantValues& constants) const;
+  GlName buildComposite(const shaders::ConstantValues& constants) const;
+
+  const GlFunctions& gl_;
+  std::map<shaders::ConstantValues, Linked> programs_;
+};
+
+}  // namespace backends::gl

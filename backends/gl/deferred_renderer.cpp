@@ -1,0 +1,196 @@
+#include "backends/gl/deferred_renderer.h"
+
+#include "backends/gl/forward_programs.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace backends::gl {
+namespace {
+
+// The blend identities of SPEC 3.7: 0 for the sums, 1 for the ldr8 product.
+constexpr float kHdrClear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+constexpr float kLdr8Clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+
+}  // namespace
+
+DeferredRenderer::DeferredRenderer(const GlFunctions& gl, shaders::Mutant mutant)
+    : gl_(gl), mutant_(mutant), programs_(gl), targets_(gl) {
+  volumeArray_ = makeVertexArray(gl_);
+  emptyArray_ = makeVertexArray(gl_);
+  volumeVertices_ = makeBuffer(gl_);
+  lightUniforms_ = makeBuffer(gl_);
+  frameUniforms_ = makeBuffer(gl_);
+  GLint alignment = 256;
+  gl_.glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  lightStride_ = (sizeof(lighting::GpuDeferredLightBlock) + std::size_t(alignment) - 1) / std::size_t(alignment) *
+                 std::size_t(alignment);
+  // deferred_light.vert's location 0: a vec4 position per vertex.
+  gl_.glBindVertexArray(volumeArray_.get());
+  gl_.glBindBuffer(GL_ARRAY_BUFFER, volumeVertices_.get());
+  gl_.glEnableVertexAttribArray(0);
+  gl_.glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(lighting::GpuVec4), nullptr);
+  gl_.glBindVertexArray(0);
+  gl_.check("creating the deferred renderer's buffers");
+}
+
+void DeferredRenderer::beginFrame(const lighting::Frame& frame, int width, int height) {
+  buffer_ = frame.scene().pipeline.deferredBuffer;
+  width_ = width;
+  height_ = height;
+  targets_.ensure(width, height, buffer_);
+  uploadVolumes(frame);
+  const lighting::GpuDeferredFrameBlock block = lighting::packDeferredFrame(frame);
+  gl_.glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.get());
+  gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
+  gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
+
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, targets_.gbufferFramebuffer());
+  gl_.glViewport(0, 0, width_, height_);
+  // A clear honours the depth mask, which the light pass turns off.
+  gl_.glDepthMask(GL_TRUE);
+  const float farDepth = 1.0f;
+  // albedo.a = 0 marks the background for the light pass.
+  for (int t = 0; t < kGbufferColourCount; ++t) gl_.glClearBufferfv(GL_COLOR, t, kHdrClear);
+  gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+  gl_.check("preparing the deferred frame");
+}
+
+void DeferredRenderer::drawFrame(const DeferredProgramSet& programs, const SceneDraws& scene,
+                                 const BakedTextures& baked, GLuint outputFramebuffer) {
+  drawGbuffer(programs.gbuffer, scene, baked);
+  drawLights(programs.light, scene);
+  drawComposite(programs.composite, outputFramebuffer);
+  unbindDeferredTextures();
+}
+
+void DeferredRenderer::uploadVolumes(const lighting::Frame& frame) {
+  const std::vector<lighting::LightVolume> volumes = lighting::lightVolumes(frame);
+  std::vector<lighting::GpuVec4> vertices;
+  std::vector<unsigned char> blocks(std::max<std::size_t>(volumes.size(), 1) * lightStride_);
+  draws_.clear();
+  for (std::size_t v = 0; v < volumes.size(); ++v) {
+    const lighting::LightVolume& volume = volumes[v];
+    draws_.push_back({volume.shape, GLint(vertices.size()), GLsizei(volume.vertices.size())});
+    vertices.insert(vertices.end(), volume.vertices.begin(), volume.vertices.end());
+    const lighting::GpuDeferredLightBlock block = lighting::packDeferredLight(frame, volume.light);
+    std::memcpy(&blocks[v * lightStride_], &block, sizeof(block));
+  }
+  gl_.glBindBuffer(GL_ARRAY_BUFFER, volumeVertices_.get());
+  gl_.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(lighting::GpuVec4)), vertices.data(),
+                   GL_DYNAMIC_DRAW);
+  gl_.glBindBuffer(GL_ARRAY_BUFFER, 0);
+  gl_.glBindBuffer(GL_UNIFORM_BUFFER, lightUniforms_.get());
+  gl_.glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(blocks.size()), blocks.data(), GL_DYNAMIC_DRAW);
+  gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
+  gl_.check("uploading the light volumes");
+}
+
+// SPEC 1, as forward: depth LESS with writes, back faces culled, no blending.
+void DeferredRenderer::drawGbuffer(GLuint program, const SceneDraws& scene, const BakedTextures& baked) {
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, targets_.gbufferFramebuffer());
+  gl_.glViewport(0, 0, width_, height_);
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthFunc(GL_LESS);
+  gl_.glDepthMask(GL_TRUE);
+  gl_.glDisable(GL_DEPTH_CLAMP);
+  gl_.glEnable(GL_CULL_FACE);
+  gl_.glCullFace(GL_BACK);
+  gl_.glFrontFace(GL_CCW);
+  gl_.glDisable(GL_BLEND);
+  gl_.glUseProgram(program);
+  scene.drawObjects(baked);
+}
+
+void DeferredRenderer::drawLights(GLuint program, const SceneDraws& scene) {
+  const bool ldr8 = buffer_ == lighting::DeferredBuffer::Ldr8;
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, targets_.lightFramebuffer());
+  gl_.glViewport(0, 0, width_, height_);
+  gl_.glClearBufferfv(GL_COLOR, 0, ldr8 ? kLdr8Clear : kHdrClear);
+  gl_.glEnable(GL_BLEND);
+  gl_.glBlendEquation(GL_FUNC_ADD);
+  if (ldr8)
+    gl_.glBlendFunc(GL_DST_COLOR, GL_ZERO);  // buffer *= exp2(-c)
+  else
+    gl_.glBlendFunc(GL_ONE, GL_ONE);  // buffer += c
+  // The G-buffer's depth is attached read-only in effect: tested, never written.
+  gl_.glEnable(GL_DEPTH_TEST);
+  gl_.glDepthMask(GL_FALSE);
+  // A volume reaching past the far plane still draws its back faces there
+  // (clamped to depth 1, where the background's cleared depth passes GEQUAL).
+  gl_.glEnable(GL_DEPTH_CLAMP);
+  gl_.glFrontFace(GL_CCW);
+  gl_.glUseProgram(program);
+  gl_.glBindVertexArray(volumeArray_.get());
+  scene.bindFrameBlock();
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredFrameBlockBinding, frameUniforms_.get(), 0,
+                        sizeof(lighting::GpuDeferredFrameBlock));
+  bindGbufferTextures();
+  for (std::size_t d = 0; d < draws_.size(); ++d) {
+    if (draws_[d].vertexCount == 0) continue;
+    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredLightBlockBinding, lightUniforms_.get(),
+                          GLintptr(d * lightStride_), sizeof(lighting::GpuDeferredLightBlock));
+    setVolumeState(draws_[d].shape);
+    gl_.glDrawArrays(GL_TRIANGLES, draws_[d].firstVertex, draws_[d].vertexCount);
+  }
+  gl_.glBindVertexArray(0);
+  gl_.glDisable(GL_DEPTH_CLAMP);
+  gl_.glDisable(GL_BLEND);
+  gl_.glDepthMask(GL_TRUE);
+}
+
+// A ray through a pixel leaves a closed convex volume exactly once: its back
+// face, drawn where the G-buffer's surface is in front of it or on it, lights
+// that surface once, also with the camera inside (lighting/deferred_lights.h).
+void DeferredRenderer::setVolumeState(lighting::LightVolumeShape shape) const {
+  if (shape == lighting::LightVolumeShape::FullScreen) {
+    gl_.glDisable(GL_CULL_FACE);
+    gl_.glDepthFunc(GL_ALWAYS);
+    return;
+  }
+  gl_.glEnable(GL_CULL_FACE);
+  if (shape == lighting::LightVolumeShape::Icosphere && mutant_ == shaders::Mutant::PointVolumeOutsideOnly) {
+    // Mutant: front faces in front of the surface, which a camera inside the
+    // volume never sees.
+    gl_.glCullFace(GL_BACK);
+    gl_.glDepthFunc(GL_LEQUAL);
+    return;
+  }
+  gl_.glCullFace(GL_FRONT);
+  gl_.glDepthFunc(GL_GEQUAL);
+}
+
+void DeferredRenderer::drawComposite(GLuint program, GLuint outputFramebuffer) {
+  gl_.glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer);
+  gl_.glViewport(0, 0, width_, height_);
+  gl_.glDisable(GL_DEPTH_TEST);
+  gl_.glDisable(GL_CULL_FACE);
+  gl_.glDisable(GL_BLEND);
+  gl_.glUseProgram(program);
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredFrameBlockBinding, frameUniforms_.get(), 0,
+                        sizeof(lighting::GpuDeferredFrameBlock));
+  gl_.glActiveTexture(GL_TEXTURE0 + kLightBufferTextureUnit);
+  gl_.glBindTexture(GL_TEXTURE_2D, targets_.lightBuffer());
+  gl_.glBindVertexArray(emptyArray_.get());
+  gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.glBindVertexArray(0);
+}
+
+void DeferredRenderer::bindGbufferTextures() const {
+  for (int t = 0; t < kGbufferColourCount; ++t) {
+    gl_.glActiveTexture(GLenum(GL_TEXTURE0 + kFirstGbufferTextureUnit + t));
+    gl_.glBindTexture(GL_TEXTURE_2D, targets_.texture(GbufferTexture(t)));
+  }
+}
+
+// No target stays bound to a texture unit while the next frame renders into
+// it: GL leaves such a feedback loop undefined once a program samples it.
+void DeferredRenderer::unbindDeferredTextures() const {
+  for (GLint unit = kFirstGbufferTextureUnit; unit <= kLightBufferTextureUnit; ++unit) {
+    gl_.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+    gl_.glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  gl_.glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace backends::gl

@@ -1,0 +1,30 @@
+// Compiling and linking the GLSL 330 that SPIRV-Cross made of the Vulkan
+// SPIR-V (shaders/embedded_spirv.h), shared by the forward and the deferred
+// programs. Each specialization constant is defined as the
+// SPIRV_CROSS_CONSTANT_ID_n macro it became. GLSL 330 has no binding
+// qualifiers, so uniform blocks and samplers are bound by name here, to the
+// bindings and texture units the Vulkan layout uses.
+#pragma once
+
+#include "backends/gl/gl_objects.h"
+#include "shaders/shader_constants.h"
+
+#include <string>
+#include <string_view>
+
+namespace backends::gl {
+
+// The program of two stages with `constants` defined; throws DriverError with
+// the compiler's or linker's log, naming `what` ("the forward program").
+GlName linkProgram(const GlFunctions& gl, std::string_view vertexSource, std::string_view fragmentSource,
+                   const shaders::ConstantValues& constants, const std::string& what);
+
+// Binds the uniform block `name` to `binding`; a block the specialised
+// program does not use has no index, and is skipped.
+void bindUniformBlock(const GlFunctions& gl, GLuint program, const char* name, GLuint binding);
+
+// Points the sampler `name` at texture unit `unit`; needs `program` current.
+// A sampler the specialised program does not use has location -1: skipped.
+void bindSampler(const GlFunctions& gl, GLuint program, const char* name, GLint unit);
+
+}  // namespace backends::gl

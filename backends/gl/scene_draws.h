@@ -1,0 +1,41 @@
+// The scene's objects as OpenGL draws, shared by the forward pass and the
+// deferred G-buffer pass (which uses forward's vertex stage): the geometry in
+// one vertex and one index buffer, the frame block in one uniform buffer and
+// the object blocks in another at the driver's offset alignment, bound per
+// draw with glBindBufferRange together with the object's baked maps.
+#pragma once
+
+#include "backends/gl/baked_textures.h"
+#include "backends/gl/gl_objects.h"
+#include "backends/packed_geometry.h"
+#include "lighting/frame.h"
+
+#include <memory>
+#include <vector>
+
+namespace backends::gl {
+
+class SceneDraws {
+ public:
+  explicit SceneDraws(const GlFunctions& gl) : gl_(gl) {}
+
+  // Uploads the geometry when the scene changed, and the frame's uniforms.
+  void update(const lighting::Frame& frame);
+  // Binds the frame block to kFrameBlockBinding (forward_programs.h).
+  void bindFrameBlock() const;
+  // Draws every object with the current program and framebuffer state.
+  void drawObjects(const BakedTextures& baked) const;
+
+ private:
+  void uploadGeometry(const lighting::Frame& frame);
+  void writeUniforms(const lighting::Frame& frame);
+
+  const GlFunctions& gl_;
+  GlName vertexArray_, vertices_, indices_;
+  GlName frameUniforms_, objectUniforms_;
+  std::size_t objectStride_ = 0;
+  std::vector<ObjectRange> objects_;
+  std::shared_ptr<const lighting::PreparedScene> scene_;
+};
+
+}  // namespace backends::gl

@@ -1,0 +1,98 @@
+#include "backends/vulkan/deferred_resources.h"
+
+#include <algorithm>
+#include <array>
+
+namespace backends::vulkan {
+namespace {
+
+vk::DeviceSize roundUp(vk::DeviceSize value, vk::DeviceSize alignment) {
+  return (value + alignment - 1) / alignment * alignment;
+}
+
+}  // namespace
+
+DeferredUniforms::DeferredUniforms(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout,
+                                   std::size_t objectCapacity, std::size_t lightCapacity)
+    : objectCapacity_(std::max<std::size_t>(objectCapacity, 1)),
+      lightCapacity_(std::max<std::size_t>(lightCapacity, 1)),
+      objectStride_(roundUp(sizeof(lighting::GpuObjectBlock), device.limits.minUniformBufferOffsetAlignment)),
+      lightStride_(roundUp(sizeof(lighting::GpuDeferredLightBlock), device.limits.minUniformBufferOffsetAlignment)),
+      frame_(device, sizeof(lighting::GpuFrameBlock), vk::BufferUsageFlagBits::eUniformBuffer),
+      objects_(device, objectStride_ * objectCapacity_, vk::BufferUsageFlagBits::eUniformBuffer),
+      lights_(device, lightStride_ * lightCapacity_, vk::BufferUsageFlagBits::eUniformBuffer),
+      deferredFrame_(device, sizeof(lighting::GpuDeferredFrameBlock), vk::BufferUsageFlagBits::eUniformBuffer) {
+  const std::array<vk::DescriptorPoolSize, 2> perSet{{{vk::DescriptorType::eUniformBuffer, 2},
+                                                      {vk::DescriptorType::eUniformBufferDynamic, 2}}};
+  descriptors_ = DescriptorSets(device.device, layout, perSet, 1);
+  const vk::DescriptorSet set = *descriptors_.sets.front();
+
+  const vk::DescriptorBufferInfo frameInfo{*frame_.buffer, 0, sizeof(lighting::GpuFrameBlock)};
+  const vk::DescriptorBufferInfo objectInfo{*objects_.buffer, 0, sizeof(lighting::GpuObjectBlock)};
+  const vk::DescriptorBufferInfo lightInfo{*lights_.buffer, 0, sizeof(lighting::GpuDeferredLightBlock)};
+  const vk::DescriptorBufferInfo deferredFrameInfo{*deferredFrame_.buffer, 0, sizeof(lighting::GpuDeferredFrameBlock)};
+  const std::array<vk::WriteDescriptorSet, 4> writes{{
+      {.dstSet = set, .dstBinding = 0, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
+       .pBufferInfo = &frameInfo},
+      {.dstSet = set, .dstBinding = 1, .descriptorCount = 1,
+       .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &objectInfo},
+      {.dstSet = set, .dstBinding = 2, .descriptorCount = 1,
+       .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &lightInfo},
+      {.dstSet = set, .dstBinding = 3, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
+       .pBufferInfo = &deferredFrameInfo},
+  }};
+  device.device.updateDescriptorSets(writes, {});
+}
+
+std::size_t vertexCount(const std::vector<lighting::LightVolume>& volumes) {
+  std::size_t count = 0;
+  for (const lighting::LightVolume& v : volumes) count += v.vertices.size();
+  return count;
+}
+
+LightVolumeVertices::LightVolumeVertices(const VulkanDevice& device, std::size_t vertexCapacity)
+    : capacity_(std::max<std::size_t>(vertexCapacity, 3)),
+      vertices_(device, capacity_ * sizeof(lighting::GpuVec4), vk::BufferUsageFlagBits::eVertexBuffer) {}
+
+std::vector<VolumeRange> LightVolumeVertices::write(const std::vector<lighting::LightVolume>& volumes) {
+  std::vector<VolumeRange> ranges;
+  std::uint32_t next = 0;
+  for (const lighting::LightVolume& v : volumes) {
+    vertices_.write(std::span(v.vertices), next * sizeof(lighting::GpuVec4));
+    ranges.push_back({next, std::uint32_t(v.vertices.size())});
+    next += std::uint32_t(v.vertices.size());
+  }
+  return ranges;
+}
+
+GBufferTextureSets::GBufferTextureSets(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout,
+                                       const GBufferTargets& targets) {
+  sampler_ = vk::raii::Sampler(device.device, vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest,
+                                                                    .minFilter = vk::Filter::eNearest,
+                                                                    .mipmapMode = vk::SamplerMipmapMode::eNearest,
+                                                                    .addressModeU = vk::SamplerAddressMode::eClampToEdge,
+                                                                    .addressModeV = vk::SamplerAddressMode::eClampToEdge,
+                                                                    .addressModeW = vk::SamplerAddressMode::eClampToEdge,
+                                                                    .maxLod = 0.0f});
+  constexpr std::uint32_t kBindings = kGBufferImageCount + 1;
+  const std::array<vk::DescriptorPoolSize, 1> perSet{{{vk::DescriptorType::eCombinedImageSampler, kBindings}}};
+  sets_ = DescriptorSets(device.device, layout, perSet, 2);  // [0] light pass, [1] composite
+
+  // Binding 4 of the light pass's set is never read there (the light buffer
+  // is being drawn); it points at the base image so the set is complete.
+  auto info = [&](const DeviceImage& image) {
+    return vk::DescriptorImageInfo{*sampler_, *image.view, vk::ImageLayout::eShaderReadOnlyOptimal};
+  };
+  std::array<std::array<vk::DescriptorImageInfo, kBindings>, 2> infos;
+  for (std::size_t s = 0; s < 2; ++s)
+    for (std::size_t b = 0; b < kGBufferImageCount; ++b) infos[s][b] = info(targets.gbuffer[b]);
+  infos[0][kGBufferImageCount] = info(targets.gbuffer[2]);
+  infos[1][kGBufferImageCount] = info(targets.lightBuffer);
+  std::vector<vk::WriteDescriptorSet> writes;
+  for (std::size_t s = 0; s < 2; ++s)
+    writes.push_back({.dstSet = *sets_.sets[s], .dstBinding = 0, .descriptorCount = kBindings,
+                      .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = infos[s].data()});
+  device.device.updateDescriptorSets(writes, {});
+}
+
+}  // namespace backends::vulkan

@@ -1,0 +1,81 @@
+#include "reference/deferred_buffers.h"
+
+#include "reference/tolerance_model.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace reference {
+
+using namespace lighting;
+namespace tol = tolerance;
+
+namespace {
+
+// The decode: -log2(max(x, 1/255)).
+double decode(double x) { return -std::log2(std::max(x, tol::kLdr8SmallestDecoded)); }
+
+}  // namespace
+
+double decodedLightSum(DeferredBuffer buffer, double lightSum) {
+  if (buffer != DeferredBuffer::Ldr8) return lightSum;
+  return decode(std::exp2(-lightSum));
+}
+
+double hdr16BlendBound(double lightSum, int contributing) {
+  // Each contributing blend rounds its source (2^-11 c_j) and the new sum
+  // (2^-11 s_j <= 2^-11 S, the terms being >= 0), each with the flush floor.
+  const double k = contributing;
+  return (k + 1.0) * tol::kHalfUnitRoundoff * std::abs(lightSum) + 2.0 * k * tol::kHalfFlushFloor;
+}
+
+double ldr8DecodeBound(double lightSum, int contributing, double sumBound) {
+  if (contributing <= 0) return 0.0;  // the clear value 1 stays exact: decodes to 0
+  const double u = tol::kUnitRoundoff;
+  const double k = contributing;
+  const double x = std::exp2(-lightSum);
+  // The first contributing light lands on the exact clear value 1: one
+  // rounding; every later one rounds its source and the product: two.
+  double dx = (2.0 * k - 1.0) * tol::kUnormRoundingError;
+  // Float arithmetic before the roundings, relative to x: the sum's own
+  // error through d exp2(-S) = -ln2 x dS, exp2's ULPs, one product per blend.
+  dx += x * (std::numbers::ln2 * sumBound +
+             2.0 * u * (tol::kExp2Ulps * k + tol::kExp2UlpsPerUnitArgument * lightSum) + k * u);
+  // The buffer holds n / 255 with |n / 255 - x| <= dx; the decode is monotone,
+  // so the extreme grid points give the extreme decoded values.
+  const double nLow = std::max(0.0, std::ceil((x - dx) * tol::kUnormSteps));
+  const double nHigh = std::min(tol::kUnormSteps, std::floor((x + dx) * tol::kUnormSteps));
+  const double exact = decode(x);
+  double bound = 0.0;
+  if (nLow <= nHigh) {
+    bound = std::max(std::abs(decode(nLow / tol::kUnormSteps) - exact), std::abs(decode(nHigh / tol::kUnormSteps) - exact));
+  }
+  return bound + tol::kLdr8DecodeAbsError;
+}
+
+double reconstructionPositionError(const CameraView& view, const Vec3& p) {
+  const double u = tol::kUnitRoundoff;
+  const Camera& c = view.camera;
+  const Vec3 offset = p - c.position;
+  const double distance = glm::length(offset);
+  const double zView = glm::dot(offset, view.forward);
+  const bool perspective = c.projection == Projection::Perspective;
+  // Along the ray through the pixel: a view-depth error dz moves the point by
+  // dz / cos(angle between ray and view axis); orthographic rays are the axis.
+  const double cosine = perspective && distance > 0 ? std::max(zView / distance, 1e-6) : 1.0;
+  const double depthPerWindowDepth = perspective
+                                         ? zView * zView * (c.farPlane - c.nearPlane) / (c.farPlane * c.nearPlane)
+                                         : (c.farPlane - c.nearPlane);
+  const double fromDepth = tol::kReconstructionDepthSteps * u * depthPerWindowDepth / cosine;
+  // Across the ray: NDC error times the view's half-extent at that depth, two axes.
+  const double halfHeight = perspective ? zView * std::tan(c.fovYDeg * std::numbers::pi / 360.0) : c.orthoHeight / 2.0;
+  const double halfExtent = halfHeight * std::max(1.0, view.aspect());
+  const double fromNdc = tol::kReconstructionNdcSteps * u * std::numbers::sqrt2 * halfExtent;
+  const double fromMatrix = tol::kReconstructionMatrixSteps * u * distance;
+  return fromDepth + fromNdc + fromMatrix;
+}
+
+}  // namespace reference

@@ -1,0 +1,125 @@
+// The deferred light buffers in the reference (SPEC 3.7), against values
+// worked out by hand in docs/tolerances.md "Deferred buffers": ldr8
+// saturates at log2(255), the hdr16 bound of a few lights, the ldr8 decode
+// bound at the sums of SPEC 10's deferred cases, and the reconstruction term.
+#include "reference/deferred_buffers.h"
+
+#include "reference/reference_renderer.h"
+#include "reference/tolerance_model.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace reference {
+namespace {
+
+using namespace lighting;
+namespace tol = tolerance;
+
+const double kLog2Of255 = 7.994353436858858;  // log2(255)
+
+TEST(DeferredBuffers, Ldr8DecodeSaturatesAtLog2Of255) {
+  EXPECT_DOUBLE_EQ(decodedLightSum(DeferredBuffer::Ldr8, 20.0), kLog2Of255);
+  EXPECT_DOUBLE_EQ(decodedLightSum(DeferredBuffer::Ldr8, 8.5), kLog2Of255);
+  EXPECT_NEAR(decodedLightSum(DeferredBuffer::Ldr8, 7.9), 7.9, 1e-12);
+  EXPECT_NEAR(decodedLightSum(DeferredBuffer::Ldr8, 1.0), 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(decodedLightSum(DeferredBuffer::Ldr8, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(decodedLightSum(DeferredBuffer::Hdr32, 20.0), 20.0);
+  EXPECT_DOUBLE_EQ(decodedLightSum(DeferredBuffer::Hdr16, 20.0), 20.0);
+}
+
+TEST(DeferredBuffers, Hdr16BoundOfThreeLights) {
+  // (k + 1) 2^-11 S + 2 k 2^-14 with k = 3, S = 1.5:
+  // 4 * 1.5 / 2048 + 6 / 16384 = 0.0029296875 + 0.0003662109375.
+  EXPECT_DOUBLE_EQ(hdr16BlendBound(1.5, 3), 0.0032958984375);
+  EXPECT_DOUBLE_EQ(hdr16BlendBound(0.0, 0), 0.0);
+}
+
+TEST(DeferredBuffers, Ldr8BoundAtTheSumsOfSpecTen) {
+  const double log2Error = tol::kLdr8DecodeAbsError;
+  // S = 0 (nothing added): the clear value 1 decodes to exactly 0.
+  EXPECT_EQ(ldr8DecodeBound(0.0, 0, 0.0), 0.0);
+  // S = 1, one light: x = 0.5 = 127.5 / 255, a tie: 127 or 128 may be stored.
+  // -log2(127/255) - 1 = 0.0056693...; 1 + log2(128/255) = 0.0056466...
+  EXPECT_NEAR(ldr8DecodeBound(1.0, 1, 0.0), std::log2(255.0 / 127.0) - 1.0 + log2Error, 1e-9);
+  // Two lights: dx = 3 half steps = 1.5/255, so 126..129 may be stored.
+  EXPECT_NEAR(ldr8DecodeBound(1.0, 2, 0.0), std::log2(255.0 / 126.0) - 1.0 + log2Error, 1e-9);
+  // S = 7.9: x = 255 * 2^-7.9 = 1.0677 steps: only n = 1 is within half a
+  // step; it decodes to log2(255), 0.0944 above 7.9.
+  EXPECT_NEAR(ldr8DecodeBound(7.9, 1, 0.0), kLog2Of255 - 7.9 + log2Error, 1e-9);
+  // S = 8.5 and S = 20: x < 1/255, saturated, and only n = 0 or 1 (both
+  // decoding to log2(255)) can be stored: nothing but the log2 error.
+  EXPECT_NEAR(ldr8DecodeBound(8.5, 1, 0.0), log2Error, 1e-12);
+  EXPECT_NEAR(ldr8DecodeBound(20.0, 1, 0.0), log2Error, 1e-12);
+}
+
+Scene ldr8Plane(double albedo, double intensity) {
+  Scene s;
+  s.image = {16, 16};
+  s.pipeline.path = RenderPath::Deferred;
+  s.pipeline.deferredBuffer = DeferredBuffer::Ldr8;
+  s.ambient = {0.1, 0.1, 0.1};
+  Object plane;
+  plane.mesh.planeSizeX = plane.mesh.planeSizeZ = 20;  // fills the 10-high view
+  plane.albedo = {albedo, albedo, albedo};
+  s.objects.push_back(plane);
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = {0, -1, 0};  // straight down onto the plane: N.L = 1
+  sun.intensity = intensity;
+  s.lights.push_back(sun);
+  return s;
+}
+
+TEST(DeferredBuffers, ReferenceValueOfLdr8WithSumTwenty) {
+  // Albedo 1, intensity 20: light sum 20 saturates; base = 1 * 0.1.
+  auto prepared = prepareScene(ldr8Plane(1.0, 20.0));
+  const ReferenceImages img = ReferenceRenderer(prepared).render(prepareFrame(prepared, 0));
+  EXPECT_NEAR(img.value.at(8, 8, 0), 0.1 + kLog2Of255, 1e-6);
+  EXPECT_EQ(img.value.at(8, 8, 3), 1.0f);  // compared
+  // Saturated: the tolerance is the log2 error and float roundings, tiny.
+  EXPECT_LT(img.tolerance.at(8, 8, 0), 1e-4);
+}
+
+TEST(DeferredBuffers, ReferenceValueOfLdr8WithSumOne) {
+  // Albedo 0.05, intensity 20: light sum 1, value 0.05 * 0.1 + 1; tolerance
+  // at least the tie at 127.5 / 255.
+  auto prepared = prepareScene(ldr8Plane(0.05, 20.0));
+  const ReferenceImages img = ReferenceRenderer(prepared).render(prepareFrame(prepared, 0));
+  EXPECT_NEAR(img.value.at(8, 8, 0), 0.005 + 1.0, 1e-6);
+  EXPECT_GE(img.tolerance.at(8, 8, 0), std::log2(255.0 / 127.0) - 1.0);
+  EXPECT_LT(img.tolerance.at(8, 8, 0), 0.0058);
+}
+
+TEST(DeferredBuffers, ForwardAndHdr32AgreeOnTheValue) {
+  Scene s = ldr8Plane(0.5, 3.0);
+  s.pipeline.deferredBuffer = DeferredBuffer::Hdr32;
+  auto deferred = prepareScene(s);
+  s.pipeline.path = RenderPath::Forward;
+  auto forward = prepareScene(s);
+  const ReferenceImages d = ReferenceRenderer(deferred).render(prepareFrame(deferred, 0));
+  const ReferenceImages f = ReferenceRenderer(forward).render(prepareFrame(forward, 0));
+  // 0.5 * 0.1 + 0.5 * 3 = 1.55 in both.
+  EXPECT_NEAR(d.value.at(8, 8, 0), 1.55, 1e-6);
+  EXPECT_EQ(d.value.at(8, 8, 0), f.value.at(8, 8, 0));
+  // Deferred adds the reconstruction and per-light product terms.
+  EXPECT_GE(d.tolerance.at(8, 8, 0), f.tolerance.at(8, 8, 0));
+}
+
+TEST(DeferredBuffers, ReconstructionErrorOfAnOrthographicView) {
+  // Default camera: orthographic, 10 high, near 0.1, far 100, at (0, 10, 0)
+  // looking down; a square image. At p = (0, 0, 0), 10 below the camera:
+  //   depth:  12 u (100 - 0.1)               = 1198.8 u
+  //   ndc:    13 u sqrt(2) * 5 (half height)  = 91.92 u
+  //   matrix: 16 u * 10                        = 160 u
+  Scene s;
+  s.image = {16, 16};
+  const Frame frame = prepareFrame(prepareScene(s), 0);
+  const double u = tol::kUnitRoundoff;
+  const double expected = (12.0 * 99.9 + 13.0 * std::sqrt(2.0) * 5.0 + 160.0) * u;
+  EXPECT_NEAR(reconstructionPositionError(frame.view, Vec3(0.0)), expected, 1e-12);
+}
+
+}  // namespace
+}  // namespace reference

@@ -1,0 +1,33 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Deferred light pass (SPEC 3.7): one light at the G-buffer's surface. The
+// position comes back from the pixel's device x, y and the depth the G-buffer
+// stored, through the inverse view-projection; the light is the forward
+// path's function from lighting.glsl, unchanged. The blend state adds (hdr)
+// or multiplies (ldr8, exp2(-c)) the result into the light buffer.
+#include "lighting.glsl"
+#include "deferred_data.glsl"
+#include "deferred_light_data.glsl"
+
+layout(location = 0) in vec4 vClip;
+
+layout(location = 0) out vec4 outLight;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 albedo = texelFetch(gbufferAlbedo, pixel, 0);
+  if (albedo.a == 0.0) {
+    // Background: the blend's identity leaves the buffer as cleared.
+    outLight = ldr8Buffer() ? vec4(1.0) : vec4(0.0);
+    return;
+  }
+  vec4 normalDepth = texelFetch(gbufferNormal, pixel, 0);
+  vec4 mask = texelFetch(gbufferMask, pixel, 0);
+  vec3 ndc = vec3(vClip.xy / vClip.w, normalDepth.w);
+  vec4 world = deferredFrame.inverseViewProjection * vec4(ndc, 1.0);
+  // Camera-relative; absolute in the absolute-coordinates mutant.
+  vec3 p = mutantWorldPosition(world.xyz / world.w);
+  vec3 N = normalDepth.xyz;
+  vec3 c = albedo.rgb * packedLight(deferredLight.light, p, N, mask);
+  outLight = ldr8Buffer() ? vec4(exp2(-c), 1.0) : vec4(c, 1.0);
+}

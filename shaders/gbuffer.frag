@@ -1,0 +1,36 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Deferred G-buffer pass (SPEC 3.7), after shaders/forward.vert: what the
+// light pass needs at each pixel, and the terms that are not real-time
+// lights. Nothing here is lit; the light pass reconstructs the position from
+// the depth stored in normal.w, so no pass samples the depth attachment.
+#include "lighting.glsl"
+#include "object_data.glsl"
+
+// Same names as forward.vert's outputs: GLSL 330 links stages by name.
+layout(location = 0) in vec3 vPosition;
+layout(location = 1) in vec3 vNormal;
+layout(location = 2) in vec3 vVertexLighting;
+layout(location = 3) in vec2 vLightmapUv;
+
+// The object's baked maps (SPEC 3.6), bound exactly as in the forward pass.
+layout(set = 1, binding = 0) uniform sampler2D lightmapTexture;
+layout(set = 1, binding = 1) uniform sampler2D shadowMaskTexture;
+
+layout(location = 0) out vec4 outAlbedo;  // rgb albedo, a = 1 (cleared to 0: background)
+layout(location = 1) out vec4 outNormal;  // xyz normalize(vNormal), w = window depth
+layout(location = 2) out vec4 outBase;    // rgb albedo * (ambient + lightmap)
+layout(location = 3) out vec4 outMask;    // the shadow mask, all ones without one
+
+void main() {
+  vec3 albedo = objectData.albedo.rgb;
+  outAlbedo = vec4(albedo, 1.0);
+  outNormal = vec4(normalize(vNormal), gl_FragCoord.z);
+  vec3 base = vec3(0.0);
+  if (AMBIENT) base += frameData.ambient.rgb;
+  if (LIGHTMAP && objectData.lightList.y != 0) base += texture(lightmapTexture, vLightmapUv).rgb;
+  outBase = vec4(albedo * base, 1.0);
+  vec4 mask = vec4(1.0);
+  if (SHADOW_MASK && objectData.lightList.z != 0) mask = texture(shadowMaskTexture, vLightmapUv);
+  outMask = mask;
+}

@@ -1,0 +1,30 @@
+// The per-object uniform block of the forward and G-buffer passes, std140 as
+// lighting::GpuObjectBlock lays it out. Apart from light_data.glsl so that
+// the deferred light and composite passes, which draw no object, do not
+// declare it (their pipelines have no binding 1).
+#ifndef LIGHTCTS_OBJECT_DATA_GLSL
+#define LIGHTCTS_OBJECT_DATA_GLSL
+
+#include "features.glsl"
+#include "mutants.glsl"
+
+layout(std140, set = 0, binding = 1) uniform ObjectBlock {
+  mat4 model;           // local to camera-relative world
+  mat4 normalMatrix;    // the rotation R (SPEC 1)
+  vec4 albedo;
+  ivec4 lightList;      // x: list count (may exceed 8), y: lightmap, z: shadow mask, w: 1 when the list is in use
+  ivec4 lightIndices[2];  // packed indices into otherLights, -1 past the end
+  vec4 lightmapTransform;
+} objectData;
+
+// The full shader asks the object whether its list is in use.
+bool objectListInUse() { return PER_OBJECT_LISTS && objectData.lightList.w != 0; }
+
+// The list index k of this object (0 <= k < 8).
+int objectLightIndex(int k) {
+  // Mutant: a loop that runs past 8 wraps around and applies lights again.
+  if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) k = k % 8;
+  return objectData.lightIndices[k / 4][k % 4];
+}
+
+#endif

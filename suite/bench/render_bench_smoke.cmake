@@ -1,0 +1,57 @@
+# Shared by the bench.*-smoke scripts: run render_bench on Vulkan with
+# --quick, turn "no device" into ctest's skip, and walk the JSON it wrote.
+# Expects -DRENDER_BENCH=<render_bench> -DOUT=<json file>.
+
+# Runs render_bench with `filter` and `extra` arguments; leaves the JSON in
+# `json` and the number of entries in `count` (the caller's scope).
+macro(run_render_bench filter)
+  file(REMOVE "${OUT}")
+  execute_process(
+    COMMAND "${RENDER_BENCH}" --backend=vulkan --quick --benchmark_min_time=0.01 ${ARGN}
+            "--benchmark_filter=${filter}" "--benchmark_out=${OUT}" --benchmark_out_format=json
+    RESULT_VARIABLE status)
+  if(status EQUAL 3)
+    # ctest's SKIP_REGULAR_EXPRESSION turns this into a skip.
+    message(FATAL_ERROR "LIGHTCTS_SKIP: no Vulkan device here")
+  endif()
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "render_bench exited with ${status}")
+  endif()
+  file(READ "${OUT}" json)
+  string(JSON count LENGTH "${json}" benchmarks)
+endmacro()
+
+# Sets `name` to entry `i`'s name and `is_iteration` to whether it is a
+# measured run (not an aggregate); fails on an entry that reports an error.
+macro(read_bench_entry i)
+  string(JSON name GET "${json}" benchmarks ${i} name)
+  string(JSON runType GET "${json}" benchmarks ${i} run_type)
+  string(JSON error ERROR_VARIABLE noError GET "${json}" benchmarks ${i} error_message)
+  if(noError STREQUAL "NOTFOUND")
+    message(FATAL_ERROR "${name}: ${error}")
+  endif()
+  set(is_iteration FALSE)
+  if(runType STREQUAL "iteration")
+    set(is_iteration TRUE)
+  endif()
+endmacro()
+
+# Fails unless entry `i` carries every counter named after it.
+function(require_counters i)
+  foreach(counter IN LISTS ARGN)
+    string(JSON value ERROR_VARIABLE missing GET "${json}" benchmarks ${i} ${counter})
+    if(NOT missing STREQUAL "NOTFOUND")
+      string(JSON name GET "${json}" benchmarks ${i} name)
+      message(FATAL_ERROR "${name}: no counter ${counter}")
+    endif()
+  endforeach()
+endfunction()
+
+# Fails unless `seen` (a list of names) holds exactly `expected` distinct ones.
+function(require_distinct seen expected what)
+  list(REMOVE_DUPLICATES seen)
+  list(LENGTH seen distinct)
+  if(NOT distinct EQUAL expected)
+    message(FATAL_ERROR "expected ${expected} benchmarks (${what}), ran: ${seen}")
+  endif()
+endfunction()
