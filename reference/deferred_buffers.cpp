@@ -33,21 +33,27 @@ double hdr16BlendBound(double lightSum, int contributing) {
 }
 
 double ldr8DecodeBound(double lightSum, int contributing, double sumBound) {
-  if (contributing <= 0) return 0.0;  // the clear value 1 stays exact: decodes to 0
+  // Nothing added, and no term that float arithmetic could make non-zero:
+  // the clear value 1 stays exact and decodes to 0.
+  if (contributing <= 0 && sumBound <= 0) return 0.0;
   const double u = tol::kUnitRoundoff;
-  const double k = contributing;
+  // A term that is exactly 0 here may reach the GPU as a tiny positive value
+  // (within sumBound): at least one blend.
+  const double k = std::max(contributing, 1);
   const double x = std::exp2(-lightSum);
-  // The first contributing light lands on the exact clear value 1: one
-  // rounding; every later one rounds its source and the product: two.
-  double dx = (2.0 * k - 1.0) * tol::kUnormRoundingError;
-  // Float arithmetic before the roundings, relative to x: the sum's own
-  // error through d exp2(-S) = -ln2 x dS, exp2's ULPs, one product per blend.
-  dx += x * (std::numbers::ln2 * sumBound +
-             2.0 * u * (tol::kExp2Ulps * k + tol::kExp2UlpsPerUnitArgument * lightSum) + k * u);
-  // The buffer holds n / 255 with |n / 255 - x| <= dx; the decode is monotone,
-  // so the extreme grid points give the extreme decoded values.
-  const double nLow = std::max(0.0, std::ceil((x - dx) * tol::kUnormSteps));
-  const double nHigh = std::min(tol::kUnormSteps, std::floor((x + dx) * tol::kUnormSteps));
+  // The sum's own error e moves the encoded value within
+  // [2^-(S+e), 2^-(S-e)] (exactly, not linearised), then exp2's ULPs and one
+  // product per blend, relative; a UNORM target clamps at 1.
+  const double arithmetic = 2.0 * u * (tol::kExp2Ulps * k + tol::kExp2UlpsPerUnitArgument * lightSum) + k * u;
+  const double low = std::exp2(-(lightSum + sumBound)) * (1.0 - arithmetic);
+  const double high = std::min(1.0, std::exp2(-(lightSum - sumBound)) * (1.0 + arithmetic));
+  // The first blend lands on the exact clear value 1: one conversion; every
+  // later one converts its source and the product: two.
+  const double rounding = (2.0 * k - 1.0) * tol::kUnormRoundingError;
+  // The buffer holds a grid point n / 255 in [low - rounding, high + rounding];
+  // the decode is monotone, so the extreme grid points give the extreme values.
+  const double nLow = std::max(0.0, std::ceil((low - rounding) * tol::kUnormSteps));
+  const double nHigh = std::min(tol::kUnormSteps, std::floor((high + rounding) * tol::kUnormSteps));
   const double exact = decode(x);
   double bound = 0.0;
   if (nLow <= nHigh) {

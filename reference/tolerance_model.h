@@ -129,13 +129,12 @@ constexpr double kHalfUnitRoundoff = 0x1p-11;
 // absolute floor of each half rounding.
 constexpr double kHalfFlushFloor = 0x1p-14;
 
-// ldr8 (RGBA8 UNORM): a value is stored as n / 255. Vulkan and OpenGL say
-// the conversion should round to nearest (Vulkan: "one of the two closest",
-// "implementations should round to nearest"); this model takes round to
-// nearest, what lavapipe, llvmpipe and softpipe do: half a step per
-// conversion. A device that truncates needs tolerance_scale 2 on ldr8 scenes.
+// ldr8 (RGBA8 UNORM): a value is stored as n / 255. Vulkan lets the
+// conversion return either of the two closest values ("implementations
+// should round to nearest" is a recommendation, not a rule), so a
+// conformant device may be up to one whole step off per conversion.
 constexpr double kUnormSteps = 255.0;
-constexpr double kUnormRoundingError = 0.5 / kUnormSteps;
+constexpr double kUnormRoundingError = 1.0 / kUnormSteps;
 
 // ldr8's decode -log2(max(x, 1/255)) saturates the light sum here.
 constexpr double kLdr8SmallestDecoded = 1.0 / kUnormSteps;

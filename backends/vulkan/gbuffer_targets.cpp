@@ -42,6 +42,11 @@ vk::Format lightBufferFormat(lighting::DeferredBuffer buffer) {
 }
 
 void requireDeferredFormats(const VulkanDevice& device, lighting::DeferredBuffer buffer) {
+  // The light volumes rely on depth clamp: without it a volume reaching past
+  // the far plane loses its back faces there, and surfaces inside it go unlit
+  // (docs/model.md). That is a missing feature, never a wrong picture.
+  if (!device.depthClamp)
+    throw NotSupportedError("the deferred path needs the depthClamp device feature, which this device lacks");
   using F = vk::FormatFeatureFlagBits;
   requireFeatures(device, kGBufferFormat, F::eColorAttachment | F::eSampledImage, "the deferred G-buffer",
                   "COLOR_ATTACHMENT and SAMPLED_IMAGE");

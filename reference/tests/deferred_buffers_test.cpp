@@ -40,18 +40,41 @@ TEST(DeferredBuffers, Ldr8BoundAtTheSumsOfSpecTen) {
   const double log2Error = tol::kLdr8DecodeAbsError;
   // S = 0 (nothing added): the clear value 1 decodes to exactly 0.
   EXPECT_EQ(ldr8DecodeBound(0.0, 0, 0.0), 0.0);
-  // S = 1, one light: x = 0.5 = 127.5 / 255, a tie: 127 or 128 may be stored.
+  // A conversion may return either of the two closest grid values (a whole
+  // step). S = 1, one light: x = 0.5 = 127.5 / 255, within one step of
+  // 126.5..128.5: 127 or 128 may be stored.
   // -log2(127/255) - 1 = 0.0056693...; 1 + log2(128/255) = 0.0056466...
   EXPECT_NEAR(ldr8DecodeBound(1.0, 1, 0.0), std::log2(255.0 / 127.0) - 1.0 + log2Error, 1e-9);
-  // Two lights: dx = 3 half steps = 1.5/255, so 126..129 may be stored.
-  EXPECT_NEAR(ldr8DecodeBound(1.0, 2, 0.0), std::log2(255.0 / 126.0) - 1.0 + log2Error, 1e-9);
-  // S = 7.9: x = 255 * 2^-7.9 = 1.0677 steps: only n = 1 is within half a
-  // step; it decodes to log2(255), 0.0944 above 7.9.
-  EXPECT_NEAR(ldr8DecodeBound(7.9, 1, 0.0), kLog2Of255 - 7.9 + log2Error, 1e-9);
+  // Two lights: three conversions, 3 steps: 124.5..130.5, so 125..130;
+  // log2(255/125) - 1 = 0.0285691 beats 1 + log2(130/255) = 0.0280239.
+  EXPECT_NEAR(ldr8DecodeBound(1.0, 2, 0.0), std::log2(255.0 / 125.0) - 1.0 + log2Error, 1e-9);
+  // S = 7.9: x = 255 * 2^-7.9 = 1.0677 steps, within one step of 0.07..2.07:
+  // n = 1 (decodes to log2(255), 0.0944 above 7.9) or n = 2 (log2(127.5),
+  // 0.9056 below): the larger.
+  EXPECT_NEAR(ldr8DecodeBound(7.9, 1, 0.0), 7.9 - std::log2(127.5) + log2Error, 1e-9);
   // S = 8.5 and S = 20: x < 1/255, saturated, and only n = 0 or 1 (both
   // decoding to log2(255)) can be stored: nothing but the log2 error.
   EXPECT_NEAR(ldr8DecodeBound(8.5, 1, 0.0), log2Error, 1e-12);
   EXPECT_NEAR(ldr8DecodeBound(20.0, 1, 0.0), log2Error, 1e-12);
+}
+
+// A pixel where the reference's light terms are exactly 0 but float32 terms
+// may not be (near a range or cone edge): a GPU term c <= sumBound = 0.01
+// encodes exp2(-c) >= 2^-0.01 = 0.99309 = 253.24 / 255, and one conversion may
+// go a whole step further: 252.24 / 255, so n = 253 is possible, decoding to
+// log2(255/253) = 0.011360 away from 0.
+TEST(DeferredBuffers, Ldr8BoundWhereOnlyFloatErrorCouldAddLight) {
+  EXPECT_EQ(ldr8DecodeBound(0.0, 0, 0.0), 0.0);
+  EXPECT_NEAR(ldr8DecodeBound(0.0, 0, 0.01), std::log2(255.0 / 253.0) + tol::kLdr8DecodeAbsError, 1e-9);
+}
+
+// A large error of the sum is not linearised: S = 2, e = 1 gives encoded
+// values in [2^-3, 2^-1] = [31.875, 127.5] / 255, one step wider: 31..128
+// (n = 30.875 rounds up to 31); decoded -log2(31/255) = 3.040 and
+// -log2(128/255) = 0.994, so the bound is 3.040 - 2 = 1.040 (a linear
+// ln2 x e would give about 0.69 x 0.25 = 0.17 of x: far too little).
+TEST(DeferredBuffers, Ldr8BoundCoversALargeSumErrorExactly) {
+  EXPECT_NEAR(ldr8DecodeBound(2.0, 1, 1.0), std::log2(255.0 / 31.0) - 2.0 + tol::kLdr8DecodeAbsError, 1e-6);
 }
 
 Scene ldr8Plane(double albedo, double intensity) {
