@@ -79,13 +79,7 @@ GlName BakedTextures::upload(const lighting::TexelMap& map, const char* what) co
   // Texel (i, j) is element j * N + i: GL's row j is the map's row j, which
   // is what v = (j + 0.5) / N addresses, so nothing is flipped.
   gl_.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT, map.texels.data());
-  // One level: the texture is complete without mipmaps.
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  setSingleLevelSampling(gl_, GL_LINEAR);  // SPEC 3.6: bilinear, clamp to edge
   gl_.glBindTexture(GL_TEXTURE_2D, 0);
   gl_.check((std::string("uploading ") + what).c_str());
   return texture;

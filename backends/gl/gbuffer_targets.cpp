@@ -83,12 +83,7 @@ GlName GbufferTargets::makeTarget(GLenum internalFormat, GLenum format, GLenum t
   gl_.glActiveTexture(GL_TEXTURE0);
   gl_.glBindTexture(GL_TEXTURE_2D, texture.get());
   gl_.glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), width_, height_, 0, format, type, nullptr);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  gl_.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  setSingleLevelSampling(gl_, GL_NEAREST);  // read with texelFetch only
   gl_.glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
 }

@@ -46,4 +46,9 @@ GlName makeRenderbuffer(const GlFunctions& gl);
 GlName makeQuery(const GlFunctions& gl);
 GlName makeTexture(const GlFunctions& gl);
 
+// For the 2D texture bound now: one level (complete without mipmaps), min and
+// mag filter `filter` (GL_LINEAR for the baked maps, GL_NEAREST for render
+// targets read with texelFetch), clamp to edge on S and T.
+void setSingleLevelSampling(const GlFunctions& gl, GLint filter);
+
 }  // namespace backends::gl
