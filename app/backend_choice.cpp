@@ -2,6 +2,7 @@
 
 #include "app/exit_status.h"
 #include "app/scene_input.h"
+#include "backends/backend_combinations.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -11,11 +12,13 @@ namespace app {
 const backends::BackendEntry* resolveBackend(const std::string& name, std::ostream& err, int& status) {
   const auto& known = backends::specBackendNames();
   if (std::find(known.begin(), known.end(), name) == known.end()) {
-    err << "lightcts: unknown backend '" << name << "'; expected one of: vulkan, gl-egl, gl-osmesa\n";
+    err << "lightcts: unknown backend '" << name << "'; expected one of:";
+    for (std::size_t i = 0; i < known.size(); ++i) err << (i == 0 ? " " : ", ") << known[i];
+    err << "\n";
     status = kExitBadInput;
     return nullptr;
   }
-  const backends::BackendEntry* entry = backends::findCompiledBackend(name);
+  const backends::BackendEntry* entry = backends::findBuiltBackendEntry(name);
   if (!entry) {
     err << "lightcts: backend '" << name << "' is not supported by this build (NotSupported)\n";
     status = kExitNotSupported;
@@ -41,11 +44,12 @@ backends::BackendOptions backendOptions(const BackendArguments& args) {
 
 std::string caseName(const std::string& scenePath, const BackendArguments& args) {
   const std::filesystem::path path(scenePath);
-  std::string backend = args.backend;
-  // The GL backends' non-default driver is part of the case (SPEC 10 names
-  // gl-egl-softpipe and gl-osmesa-softpipe).
-  if (!args.driver.empty() && args.driver != "llvmpipe") backend += "-" + args.driver;
-  return path.parent_path().filename().string() + "." + path.stem().string() + "." + backend;
+  // The case ends in the combination's suffix (SPEC 10), from the one table;
+  // a driver the table does not know keeps its name in the case, so two
+  // such runs never share evidence.
+  const backends::BackendCombination* combination = backends::findCombination(args.backend, args.driver);
+  const std::string suffix = combination ? combination->suffix : args.backend + "-" + args.driver;
+  return path.parent_path().filename().string() + "." + path.stem().string() + "." + suffix;
 }
 
 }  // namespace app

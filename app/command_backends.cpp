@@ -10,7 +10,7 @@ namespace app {
 int runBackendsCommand(std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     for (const std::string& name : backends::specBackendNames()) {
-      const backends::BackendEntry* entry = backends::findCompiledBackend(name);
+      const backends::BackendEntry* entry = backends::findBuiltBackendEntry(name);
       if (!entry) {
         out << name << ": not built (NotSupported)\n";
         continue;

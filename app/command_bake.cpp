@@ -3,11 +3,10 @@
 #include "app/scene_input.h"
 #include "baking/bake.h"
 #include "baking/overlap_map.h"
+#include "imaging/atomic_file.h"
 #include "imaging/image_files.h"
-#include "imaging/text_file.h"
 #include "lighting/scene_loader.h"
 
-#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -59,10 +58,9 @@ imaging::Image shadowMaskImage(const lighting::TexelMap& map) {
   return image;
 }
 
-// The overlap map as an 8-bit PNG in the legend's exact colours (the
-// project's PNG writer tone-maps, which would shift them). Texel (i, j) is
-// pixel (i, j): row 0 is v = 0, the plane's local -Z edge. Written to a
-// hidden temporary file and renamed, like every image the project writes.
+// The overlap map as an exact 8-bit PNG in the legend's colours (the preview
+// writer tone-maps, which would shift them). Texel (i, j) is pixel (i, j):
+// row 0 is v = 0, the plane's local -Z edge.
 void writeOverlapPng(const fs::path& path, const baking::OverlapMap& map) {
   const int n = map.resolution;
   std::vector<std::uint8_t> bytes(std::size_t(n) * std::size_t(n) * 3);
@@ -70,25 +68,7 @@ void writeOverlapPng(const fs::path& path, const baking::OverlapMap& map) {
     const baking::Rgb8 colour = baking::overlapColour(map.counts[t]);
     for (std::size_t c = 0; c < 3; ++c) bytes[t * 3 + c] = colour[c];
   }
-  std::string name(1, '.');  // appended: GCC 12's false -Wrestrict on "." + string
-  name += path.stem().string();
-  name += ".partial.png";
-  const fs::path temporary = path.parent_path() / name;
-  auto out = OIIO::ImageOutput::create(temporary.string());
-  if (!out) throw imaging::ImageFileError("cannot write " + path.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec spec(n, n, 3, OIIO::TypeDesc::UINT8);
-  std::error_code ec;
-  if (!out->open(temporary.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) || !out->close()) {
-    const std::string message = out->geterror();
-    fs::remove(temporary, ec);
-    throw imaging::ImageFileError("cannot write " + path.string() + ": " + message);
-  }
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw imaging::ImageFileError("cannot write " + path.string() + ": " + ec.message());
-  }
+  imaging::writePng8(path.string(), n, n, 3, bytes);
 }
 
 Json shadowMaskJson(const lighting::PreparedScene& prepared) {

@@ -3,7 +3,7 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
-#include "imaging/text_file.h"
+#include "imaging/atomic_file.h"
 #include "reports/bench_compare.h"
 #include "runner/bench_run.h"
 

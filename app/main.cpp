@@ -2,6 +2,7 @@
 // No logic lives here that a test could not reach through the commands.
 #include "app/commands.h"
 #include "app/exit_status.h"
+#include "backends/backend_combinations.h"
 
 #include <CLI/CLI.hpp>
 
@@ -61,8 +62,8 @@ int main(int argc, char** argv) {
                          "Folder for the evidence of a failure (default: lightcts-evidence/<group>.<name>.<backend>)");
   auto* runCmd = cli.add_subcommand("run", "Run the whole suite: results.json, junit.xml, report/index.html");
   runCmd->add_option("--backend", run.backends,
-                     "Backends to run: vulkan, gl-egl, gl-osmesa (each of its drivers), or one combination: "
-                     "gl-egl-softpipe, gl-osmesa-softpipe (default: every one present)");
+                     "Backends to run: an API backend (each of its drivers) or one combination: " +
+                         backends::combinationSuffixList() + " (default: every one present)");
   runCmd->add_option("--scenes", run.scenesDir, "Scene folder: <group>/<name>.json, or one group's folder")
       ->default_val("suite/scenes");
   runCmd->add_option("--out", run.outDir, "Output folder")->required();

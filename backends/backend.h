@@ -86,8 +86,11 @@ struct BackendEntry {
   std::function<std::unique_ptr<Backend>(const BackendOptions&)> create;
 };
 
-// The backends compiled into this build.
-const std::vector<BackendEntry>& compiledBackends();
-const BackendEntry* findCompiledBackend(const std::string& name);
+// The registry entries of the backends built into this binary (registry.cpp),
+// and the one named `name` (SPEC 8 --backend), or null. An entry is how a
+// backend is listed and created, not a backend: create() may still find no
+// driver or device.
+const std::vector<BackendEntry>& builtBackendEntries();
+const BackendEntry* findBuiltBackendEntry(const std::string& name);
 
 }  // namespace backends

@@ -22,14 +22,14 @@ bool validationRequestedByDefault() {
 #endif
 }
 
-const std::vector<BackendEntry>& compiledBackends() {
+const std::vector<BackendEntry>& builtBackendEntries() {
   static const std::vector<BackendEntry> entries = {vulkan::vulkanBackendEntry(), gl::eglBackendEntry(),
                                                     gl::osmesaBackendEntry()};
   return entries;
 }
 
-const BackendEntry* findCompiledBackend(const std::string& name) {
-  for (const BackendEntry& entry : compiledBackends())
+const BackendEntry* findBuiltBackendEntry(const std::string& name) {
+  for (const BackendEntry& entry : builtBackendEntries())
     if (entry.name == name) return &entry;
   return nullptr;
 }

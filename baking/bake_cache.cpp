@@ -3,15 +3,14 @@
 #include "baking/byte_stream.h"
 #include "baking/sha256.h"
 #include "baking/source_fingerprint.h"  // generated (CMakeLists.txt)
+#include "imaging/atomic_file.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
-#include <stdexcept>
-#include <unistd.h>
+#include <string_view>
 
 namespace baking {
 namespace {
@@ -163,20 +162,6 @@ std::size_t cacheFileSize(const std::vector<int>& resolutions) {
   return size;
 }
 
-// A name no other writer (thread or process) uses at the same time.
-fs::path temporaryFileBeside(const fs::path& target) {
-  static std::atomic<unsigned> counter{0};
-  // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on "." + string.
-  std::string name(1, '.');
-  name += target.filename().string();
-  name += '.';
-  name += std::to_string(::getpid());
-  name += '.';
-  name += std::to_string(counter++);
-  name += ".partial";
-  return target.parent_path() / name;
-}
-
 }  // namespace
 
 std::string bakeCacheKey(const lighting::PreparedScene& prepared, const BakeOptions& options) {
@@ -231,7 +216,6 @@ std::shared_ptr<const lighting::BakedLighting> readCachedBake(const std::string&
 }
 
 bool writeCachedBake(const lighting::BakedLighting& baked, const BakeOptions& options) {
-  fs::path temporary;
   try {
     const fs::path path = bakeCacheFile(baked.cacheKey, options);
     if (path.empty() || baked.cacheKey.size() != kKeyLength) return false;
@@ -256,22 +240,12 @@ bool writeCachedBake(const lighting::BakedLighting& baked, const BakeOptions& op
     }
     w.u64(contentChecksum(w.bytes().data(), w.bytes().size()));
 
-    std::error_code ec;
-    fs::create_directories(path.parent_path(), ec);
-    temporary = temporaryFileBeside(path);
-    {
-      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-      out.write(reinterpret_cast<const char*>(w.bytes().data()), std::streamsize(w.bytes().size()));
-      out.close();
-      if (!out) throw std::runtime_error("write failed");
-    }
-    fs::rename(temporary, path, ec);
-    if (ec) throw std::runtime_error("rename failed");
+    // Atomic, so a parallel run reading the same key never sees half a file.
+    imaging::writeFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(w.bytes().data()), w.bytes().size()));
     return true;
   } catch (const std::exception&) {
     // A cache that cannot be written only costs a re-bake next time.
-    std::error_code ignored;
-    if (!temporary.empty()) fs::remove(temporary, ignored);
     return false;
   }
 }

@@ -1,9 +1,8 @@
 #include "comparison/comparison_report.h"
 
+#include "imaging/atomic_file.h"
 #include "imaging/image_files.h"
-#include "imaging/text_file.h"
 
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -48,42 +47,13 @@ Json jsonTriple(const float (&values)[3]) {
   return Json::array({jsonNumber(values[0]), jsonNumber(values[1]), jsonNumber(values[2])});
 }
 
-// ".NAME.partial.EXT" beside the target, as imaging does, so a reader never
-// sees a half-written file and OIIO still picks the format from the extension.
-fs::path partialPath(const fs::path& target) {
-  std::string name = ".";  // appended, not `"." + ...`: see triple()
-  name += target.stem().string() + ".partial" + target.extension().string();
-  return target.parent_path() / name;
-}
-
-void renameIntoPlace(const fs::path& temporary, const fs::path& target) {
-  std::error_code ec;
-  fs::rename(temporary, target, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error("cannot write " + target.string() + ": " + ec.message());
-  }
-}
-
 // The mask is data, not light: written as exact 8-bit levels rather than
 // through writePngPreview's tone mapping.
 void writeErrorMask(const fs::path& target, const imaging::Image& mask) {
   std::vector<std::uint8_t> bytes(mask.pixels.size());
   std::transform(mask.pixels.begin(), mask.pixels.end(), bytes.begin(),
                  [](float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); });
-  const fs::path temporary = partialPath(target);
-  auto out = OIIO::ImageOutput::create(temporary.string());
-  if (!out) throw imaging::ImageFileError("cannot write " + target.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec spec(mask.width, mask.height, mask.channels, OIIO::TypeDesc::UINT8);
-  if (!out->open(temporary.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) ||
-      !out->close()) {
-    const std::string message = out->geterror();
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw imaging::ImageFileError("cannot write " + target.string() + ": " + message);
-  }
-  renameIntoPlace(temporary, target);
+  imaging::writePng8(target.string(), mask.width, mask.height, mask.channels, bytes);
 }
 
 }  // namespace

@@ -89,18 +89,6 @@ void paint(imaging::Image& mask, int x, int y, float r, float g, float b) {
 
 }  // namespace
 
-std::string_view verdictName(Verdict verdict) {
-  switch (verdict) {
-    case Verdict::Pass: return "Pass";
-    case Verdict::Fail: return "Fail";
-    case Verdict::QualityWarning: return "QualityWarning";
-    case Verdict::NotSupported: return "NotSupported";
-    case Verdict::Crash: return "Crash";
-    case Verdict::Timeout: return "Timeout";
-  }
-  throw std::invalid_argument("verdictName: not a Verdict");
-}
-
 Comparison compareImages(const imaging::Image& result, const reference::ReferenceImages& reference,
                          const lighting::Expectation& expect, int worstCount) {
   validate(result, reference, worstCount);

@@ -2,21 +2,14 @@
 // Pure computation: no files, no printing (comparison_report.h does those).
 #pragma once
 
+#include "comparison/verdict.h"  // Verdict: a comparison yields only Pass or Fail
 #include "imaging/image.h"
 #include "lighting/scene.h"
 #include "reference/reference_renderer.h"
 
-#include <string_view>
 #include <vector>
 
 namespace comparison {
-
-// SPEC 7's verdicts. A comparison yields only Pass or Fail; the others are
-// decided by whoever runs the backend (missing driver, crash, hang).
-enum class Verdict { Pass, Fail, QualityWarning, NotSupported, Crash, Timeout };
-
-// Exactly SPEC 7's words: "Pass", "Fail", "QualityWarning", ...
-std::string_view verdictName(Verdict verdict);
 
 // One failing pixel, with everything needed to see why it failed.
 struct PixelReport {

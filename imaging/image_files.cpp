@@ -1,5 +1,7 @@
 #include "imaging/image_files.h"
 
+#include "imaging/atomic_file.h"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
 
@@ -14,27 +16,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Writes through OIIO to a hidden ".NAME.partial.EXT" beside `path`, then
-// renames it over `path`. OIIO picks the format from the extension, so the
-// temporary name keeps it.
+// Writes through OIIO to a temporary beside `path` (atomic_file.h), renamed
+// over `path` when complete. OIIO picks the format from the extension, which
+// the temporary name keeps.
 void writeAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc format,
                      const void* pixels) {
-  const fs::path target(path);
-  const std::string temporary =
-      (target.parent_path() / ("." + target.stem().string() + ".partial" + target.extension().string())).string();
-  auto out = OIIO::ImageOutput::create(temporary);
-  if (!out) throw ImageFileError("cannot write " + path + ": " + OIIO::geterror());
-  if (!out->open(temporary, spec) || !out->write_image(format, pixels) || !out->close()) {
-    const std::string message = out->geterror();
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw ImageFileError("cannot write " + path + ": " + message);
-  }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw ImageFileError("cannot write " + path + ": " + ec.message());
+  try {
+    writeThroughTemporary(path, [&](const fs::path& temporary) {
+      auto out = OIIO::ImageOutput::create(temporary.string());
+      if (!out) throw ImageFileError("cannot write " + path + ": " + OIIO::geterror());
+      if (!out->open(temporary.string(), spec) || !out->write_image(format, pixels) || !out->close())
+        throw ImageFileError("cannot write " + path + ": " + out->geterror());
+    });
+  } catch (const ImageFileError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw ImageFileError(e.what());  // the rename failed: callers catch image errors as ImageFileError
   }
 }
 
@@ -61,6 +58,15 @@ Image readExr(const std::string& path) {
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
     throw ImageFileError("cannot read " + path + ": " + in->geterror());
   return image;
+}
+
+void writePng8(const std::string& path, int width, int height, int channels, const std::vector<std::uint8_t>& bytes) {
+  if (bytes.size() != std::size_t(width) * std::size_t(height) * std::size_t(channels))
+    throw ImageFileError("cannot write " + path + ": " + std::to_string(bytes.size()) + " bytes for a " +
+                         std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(channels) +
+                         " image");
+  const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  writeAtomically(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
 }
 
 void writePngPreview(const std::string& path, const Image& image) {

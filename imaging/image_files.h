@@ -1,12 +1,14 @@
 // Writing and reading images with OpenImageIO. Writes go to a temporary file
-// in the same folder and are renamed into place, so a failed or interrupted
-// write never leaves a half-written image behind.
+// in the same folder and are renamed into place (atomic_file.h), so a failed
+// or interrupted write never leaves a half-written image behind.
 #pragma once
 
 #include "imaging/image.h"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace imaging {
 
@@ -22,5 +24,10 @@ Image readExr(const std::string& path);
 // 8-bit sRGB PNG for people: linear RGB tone-mapped with x / (1 + x) per
 // channel, then encoded with the sRGB transfer function. Alpha is dropped.
 void writePngPreview(const std::string& path, const Image& image);
+
+// An exact 8-bit PNG of data, not light (error masks, overlap maps): `bytes`
+// holds width * height * channels levels, row 0 at the top, written as they
+// are, with no tone mapping.
+void writePng8(const std::string& path, int width, int height, int channels, const std::vector<std::uint8_t>& bytes);
 
 }  // namespace imaging

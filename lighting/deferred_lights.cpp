@@ -193,4 +193,22 @@ GpuDeferredFrameBlock packDeferredFrame(const Frame& frame) {
   return block;
 }
 
+RasterState lightVolumeRasterState(LightVolumeShape shape, VolumeRule rule) {
+  constexpr bool kNoDepthWrites = false;
+  switch (shape) {
+    case LightVolumeShape::FullScreen: return {CullMode::None, DepthCompare::Always, kNoDepthWrites, false};
+    case LightVolumeShape::Icosphere:
+      if (rule == VolumeRule::OutsideOnlyMutant)
+        return {CullMode::Back, DepthCompare::LessOrEqual, kNoDepthWrites, true};
+      break;
+    case LightVolumeShape::Pyramid: break;
+  }
+  return {CullMode::Front, DepthCompare::GreaterOrEqual, kNoDepthWrites, true};
+}
+
+LightBufferState lightBufferState(DeferredBuffer buffer) {
+  if (buffer == DeferredBuffer::Ldr8) return {LightBlend::Multiply, 1.0f};
+  return {LightBlend::Add, 0.0f};
+}
+
 }  // namespace lighting

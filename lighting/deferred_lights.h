@@ -7,14 +7,18 @@
 //   spot:        a pyramid from the light's position along its direction, as
 //                long as the range and as wide as the outer cone; an icosphere
 //                when the cone is too wide for a pyramid (half angle >= kWidestPyramidHalfAngleDeg).
-// Volumes are drawn back faces only with depth test GREATER_OR_EQUAL against
-// the G-buffer depth and no depth writes: a ray through a pixel leaves a convex
-// volume exactly once, so each pixel is lit once, also with the camera inside
-// the volume (docs/model.md).
+// How each volume is rasterised and how the light buffer blends is decided
+// here too (lightVolumeRasterState, lightBufferState), as API-neutral data the
+// backends only translate: volumes are drawn back faces only with depth test
+// GREATER_OR_EQUAL against the G-buffer depth and no depth writes: a ray
+// through a pixel leaves a convex volume exactly once, so each pixel is lit
+// once, also with the camera inside the volume (docs/model.md).
 #pragma once
 
 #include "lighting/frame.h"
 #include "lighting/gpu_packing.h"
+#include "lighting/raster_state.h"
+#include "lighting/scene.h"
 
 #include <vector>
 
@@ -32,6 +36,31 @@ struct LightVolume {
   LightVolumeShape shape = LightVolumeShape::FullScreen;
   std::vector<GpuVec4> vertices;  // xyz, w = 1; three per triangle
 };
+
+// Which rule the light pass draws volumes by: the model's, or that of the
+// point-volume-outside-only mutant (shaders::Mutant::PointVolumeOutsideOnly;
+// shaders::volumeRule maps a mutant to this, since lighting knows no shaders).
+enum class VolumeRule { Model, OutsideOnlyMutant };
+
+// How the light pass rasterises a volume of `shape`, against the G-buffer
+// depth attached read-only (never written):
+//   FullScreen: no culling, depth ALWAYS;
+//   Icosphere, Pyramid: back faces only (cull FRONT), depth GREATER_OR_EQUAL,
+//     depth clamp on, so back faces past the far plane still draw there (at
+//     depth 1, where the background's cleared depth passes);
+//   the mutant, on icospheres only: front faces (cull BACK) with depth
+//     LESS_OR_EQUAL, which draws nothing for a volume around the camera.
+RasterState lightVolumeRasterState(LightVolumeShape shape, VolumeRule rule);
+
+// How light draws accumulate in the light buffer (SPEC 3.7): hdr32 and hdr16
+// sum c (blend ONE, ONE) from a clear of 0; ldr8 multiplies exp2(-c) (blend
+// DST_COLOR, ZERO) from a clear of 1. The clear is the blend's identity.
+enum class LightBlend { Add, Multiply };
+struct LightBufferState {
+  LightBlend blend = LightBlend::Add;
+  float clearValue = 0.0f;  // every channel, alpha included
+};
+LightBufferState lightBufferState(DeferredBuffer buffer);
 
 // std140, binding 2 in the light pass: the one light this draw evaluates.
 struct GpuDeferredLightBlock {

@@ -759,6 +759,8 @@ Scene loadSceneText(std::string_view text, const std::string& sourceName) {
   return scene;
 }
 
+std::string_view deferredBufferName(DeferredBuffer buffer) { return choiceName(kDeferredBuffers, buffer); }
+
 Scene loadSceneFile(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {

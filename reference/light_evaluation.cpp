@@ -68,6 +68,11 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double distSqr = std::max(glm::dot(ray, ray), kMinDistanceSquared);
     const Vec3 L = ray * (1.0 / std::sqrt(distSqr));
     const double nl = saturate(glm::dot(N, L));
+    // rangeAtt and spotAtt are lighting::rangeAttenuation and spotAttenuation
+    // (light_math.cpp) written out operation for operation, so they give the
+    // same doubles: inlined because the error bound below needs the
+    // intermediates q, g and s, which those functions square away. A change to
+    // either formula there must be made here too.
     const double q = distSqr * light.invRangeSq;
     const double g = saturate(1.0 - q * q);
     const double rangeAtt = g * g;

@@ -270,15 +270,16 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         }
       }
 
-      Vec3 value(0.0), tolerance(tol::kFlushToZeroFloor);
+      Vec3 value(0.0), bound(0.0), shiftChange(0.0), interpolation(0.0);
       if (hits[k]) {
         const Ray ray = frame.view.rayThroughPixel(cx, cy);
         if (shading.depthIsAmbiguous(ray, *hits[k])) compared = false;
         const Shaded centre = shading.shade(*hits[k]);
         rowEvaluations += centre.evaluations;
         value = centre.value;
+        bound = centre.bound;
+        interpolation = centre.interpolation;
         // Sub-pixel shifts: the largest change of the shaded value.
-        Vec3 shiftChange(0.0), interpolation = centre.interpolation;
         const double shifts[4][2] = {{tol::kSubpixelShiftPx, 0}, {-tol::kSubpixelShiftPx, 0},
                                      {0, tol::kSubpixelShiftPx}, {0, -tol::kSubpixelShiftPx}};
         for (const auto& s : shifts) {
@@ -292,10 +293,8 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
           shiftChange = glm::max(shiftChange, glm::abs(shifted.value - value));
           interpolation = glm::max(interpolation, shifted.interpolation);
         }
-        tolerance += centre.bound + shiftChange + interpolation +
-                     glm::abs(value) * (tol::kStorageRoundingSteps * tol::kUnitRoundoff);
       }
-      tolerance *= toleranceScale;
+      const Vec3 tolerance = tol::pixelTolerance(value, bound, shiftChange, interpolation, toleranceScale);
       for (int c = 0; c < 3; ++c) {
         out.value.at(i, j, c) = float(value[c]);
         out.tolerance.at(i, j, c) = float(tolerance[c]);

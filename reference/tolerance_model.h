@@ -1,15 +1,25 @@
-// The named constants of the tolerance model (SPEC 7). docs/tolerances.md
-// derives each one; a constant changes only together with that document.
+// The tolerance model (SPEC 7): its named constants, and pixelTolerance, the
+// formula that combines them into a pixel's tolerance. docs/tolerances.md
+// derives each one; a constant or the formula changes only together with
+// that document.
 //
 // A pixel's tolerance is the largest difference a correct float32
-// implementation of SPEC 3 may show against the double-precision value:
+// implementation of SPEC 3 may show against the double-precision value V:
 //
 //   tolerance = tolerance_scale * ( albedo * arithmetic bound of the light sum
 //                                   + albedo * filtering bound of the lightmap
 //                                   + largest change over sub-pixel shifts
-//                                   + storage rounding of the result
+//                                   + albedo * interpolation allowance (against real time)
+//                                   + storage rounding of V
 //                                   + flush-to-zero floor )
+//
+// The bounds of the terms come from the reference (light_evaluation.cpp,
+// lightmap_sampling.cpp, deferred_buffers.cpp, baked_lights_realtime.cpp);
+// reference_renderer.cpp shades and shifts, and pixelTolerance sums.
 #pragma once
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
 
 namespace reference::tolerance {
 
@@ -146,5 +156,23 @@ constexpr double kExp2UlpsPerUnitArgument = 2;
 // GLSL log2 of the decode: 3 ULP of results below 8 (log2(255) < 8), or
 // 2^-21 absolute for x in [0.5, 2]: at most 3 x 2^-20 absolute.
 constexpr double kLdr8DecodeAbsError = 3 * 0x1p-20;
+
+// --- The combination ---
+
+// The formula at the top of this file, per channel, for a pixel whose shaded
+// value is `value` (V). `shadedBound`: the first two terms, already times the
+// albedo, with the roundings of the final combine and of the light buffer
+// (reference_renderer.cpp, shade()). `shiftChange`: the largest |V(shifted) -
+// V| over the sub-pixel shifts. `interpolation`: the albedo times the
+// interpolation allowance, the largest over the centre and its shifts; 0
+// unless the scene is checked against real time. A pixel that sees no
+// surface passes zeros and gets the floor alone.
+inline glm::dvec3 pixelTolerance(const glm::dvec3& value, const glm::dvec3& shadedBound,
+                                 const glm::dvec3& shiftChange, const glm::dvec3& interpolation,
+                                 double toleranceScale) {
+  return (glm::dvec3(kFlushToZeroFloor) +
+          (shadedBound + shiftChange + interpolation + glm::abs(value) * (kStorageRoundingSteps * kUnitRoundoff))) *
+         toleranceScale;
+}
 
 }  // namespace reference::tolerance

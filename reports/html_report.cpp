@@ -1,7 +1,7 @@
 #include "reports/html_report.h"
 
-#include "imaging/text_file.h"
-#include "reports/html_escape.h"
+#include "imaging/atomic_file.h"
+#include "reports/html_page.h"
 #include "reports/html_sections.h"
 
 #include <sstream>
@@ -11,14 +11,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kStyle = R"(
-body { font: 14px/1.4 system-ui, sans-serif; margin: 1.5em; color: #222; }
-h1 { font-size: 1.5em; } h2 { border-bottom: 1px solid #ccc; margin-top: 2em; } h3 { margin-bottom: .3em; }
-table { border-collapse: collapse; margin: .5em 0; }
-th, td { border: 1px solid #ccc; padding: 2px 6px; text-align: left; vertical-align: top; }
-th { background: #f3f3f3; } table.summary { font-size: .9em; } td.n { text-align: right; font-variant-numeric: tabular-nums; }
-dl.meta { display: grid; grid-template-columns: max-content auto; gap: 2px 1em; }
-dl.meta dt { font-weight: bold; } dl.meta dd { margin: 0; }
+// The report's own rules; the base stylesheet is html_page's.
+constexpr const char* kReportStyle = R"(table.summary { font-size: .9em; }
 .v { padding: 0 4px; border-radius: 3px; font-weight: bold; white-space: nowrap; }
 .v-Pass, .v-killed { background: #d4f4d4; } .v-ExpectedFail, .v-NotSupported { background: #e8e8e8; }
 .v-QualityWarning { background: #fff0b3; }
@@ -46,9 +40,9 @@ std::string htmlReport(const Json& results, const fs::path& runDir, const fs::pa
   checkResultsFormat(results);
   const html::Page page{results, runDir, reportDir};
   std::ostringstream out;
-  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-      << "<title>lightcts report " << escapeText(textField(results, "lightcts_revision")) << ' '
-      << escapeText(textField(results, "started_utc")) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+  std::string title = "lightcts report ";  // appended: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&
+  title.append(textField(results, "lightcts_revision")).append(" ").append(textField(results, "started_utc"));
+  html::pageStart(out, title, kReportStyle);
   html::header(out, page);
   html::backendSummary(out, page);
   html::mutantTable(out, page);
@@ -57,7 +51,7 @@ std::string htmlReport(const Json& results, const fs::path& runDir, const fs::pa
   html::allTestsTable(out, page);
   html::poppingTables(out, page);
   html::slowestTests(out, page);
-  out << "</body>\n</html>\n";
+  html::pageEnd(out);
   return out.str();
 }
 

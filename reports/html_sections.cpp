@@ -24,13 +24,28 @@ void metaRow(std::ostream& out, std::string_view term, std::string_view value) {
   out << "<dt>" << escapeText(term) << "</dt><dd>" << escapeText(value.empty() ? "-" : value) << "</dd>\n";
 }
 
+// The verdict columns of the backend table: every verdict that a table of
+// counts always lists, and any other that occurred in this run.
+std::vector<comparison::Verdict> verdictColumns(const Json& results) {
+  std::vector<comparison::Verdict> columns;
+  for (const comparison::Verdict verdict : comparison::kAllVerdicts) {
+    const std::string name(comparison::verdictName(verdict));
+    bool occurred = comparison::listedWhenZero(verdict);
+    for (const Json& backend : arrayField(results, "backends")) {
+      const Json& counts = objectField(backend, "counts");
+      occurred = occurred || (counts.contains(name) && counts[name].is_number_integer() && counts[name] > 0);
+    }
+    for (const Json& test : arrayField(results, "tests")) occurred = occurred || textField(test, "verdict") == name;
+    if (occurred) columns.push_back(verdict);
+  }
+  return columns;
+}
+
 }  // namespace
 
 std::string verdictBadge(std::string_view verdict) {
-  static const std::vector<std::string> known = {"Pass",         "Fail",         "QualityWarning", "NotSupported",
-                                                 "Crash",        "Timeout",      "ExpectedFail",   "UnexpectedPass",
-                                                 "killed",       "survived"};
-  const bool isKnown = std::find(known.begin(), known.end(), verdict) != known.end();
+  // The word becomes a CSS class only when it is a verdict or a mutant status.
+  const bool isKnown = comparison::parseVerdict(verdict) || comparison::parseMutantStatus(verdict);
   return "<span class=\"v v-" + std::string(isKnown ? verdict : "unknown") + "\">" +
          escapeText(verdict.empty() ? "unknown" : verdict) + "</span>";
 }
@@ -52,15 +67,15 @@ void header(std::ostream& out, const Page& page) {
   for (const Json& test : arrayField(results, "tests")) {
     const std::string verdict = textField(test, "verdict");
     ++total;
-    if (verdict == "QualityWarning") ++warnings;
+    if (comparison::parseVerdict(verdict) == comparison::Verdict::QualityWarning) ++warnings;
     else if (outcomeOf(verdict) == Outcome::Failure || outcomeOf(verdict) == Outcome::Error) ++problems;
     else if (outcomeOf(verdict) == Outcome::Skipped) ++skipped;
   }
   for (const Json& mutant : arrayField(results, "mutants"))
-    if (textField(mutant, "status") != "killed" && textField(mutant, "status") != "NotSupported") ++survived;
+    if (mutantFailed(textField(mutant, "status"))) ++survived;
   long long brokenBackends = 0;
   for (const Json& backend : arrayField(results, "backends"))
-    brokenBackends += textField(backend, "status") != "ran" && textField(backend, "status") != "NotSupported";
+    brokenBackends += backendFailed(textField(backend, "status"));
 
   out << "<h1>lightcts conformance report</h1>\n<p><strong>";
   if (problems == 0 && survived == 0 && brokenBackends == 0)
@@ -88,7 +103,9 @@ void header(std::ostream& out, const Page& page) {
 void backendSummary(std::ostream& out, const Page& page) {
   out << "<h2 id=\"backends\">Backends</h2>\n<table class=\"summary\">\n<tr><th>backend</th><th>status</th><th>device</th>"
          "<th>driver</th><th>driver version</th><th>API</th>";
-  for (const std::string& verdict : verdictNames()) out << "<th>" << escapeText(verdict) << "</th>";
+  const std::vector<comparison::Verdict> columns = verdictColumns(page.results);
+  for (const comparison::Verdict verdict : columns)
+    out << "<th>" << escapeText(comparison::verdictName(verdict)) << "</th>";
   out << "<th>wall s</th><th>expected failures</th><th>message</th></tr>\n";
   std::map<std::string, long long> totals;
   for (const std::string& name : backendOrder(page.results)) {
@@ -102,15 +119,17 @@ void backendSummary(std::ostream& out, const Page& page) {
     const Json& counts = objectField(entry, "counts");
     const Json& device = objectField(entry, "device");
     const std::string status = backend ? textField(entry, "status") : "not listed in backends";
-    out << "<tr>" << cell(name) << "<td>" << (status == "ran" ? escapeText(status) : verdictBadge(status)) << "</td>"
+    const bool ran = comparison::parseBackendStatus(status) == comparison::BackendStatus::Ran;
+    out << "<tr>" << cell(name) << "<td>" << (ran ? escapeText(status) : verdictBadge(status)) << "</td>"
         << cell(textField(device, "name")) << cell(textField(device, "driver"))
         << cell(textField(device, "driver_version")) << cell(textField(device, "api_version"));
-    for (const std::string& verdict : verdictNames()) {
+    for (const comparison::Verdict column : columns) {
+      const std::string verdict(comparison::verdictName(column));
       const long long n = counts.contains(verdict) && counts[verdict].is_number_integer()
                               ? counts[verdict].get<long long>()
                               : counted[verdict];
       totals[verdict] += n;
-      const bool bad = n > 0 && verdict != "Pass" && verdict != "NotSupported" && verdict != "ExpectedFail";
+      const bool bad = n > 0 && comparison::needsAttention(column);
       out << "<td class=\"n" << (n == 0 ? " zero" : bad ? " bad" : "") << "\">" << n << "</td>";
     }
     out << numberCell(formatField(entry, "wall_s")) << cell(textField(entry, "expected_failures_file")) << "<td>"
@@ -120,7 +139,8 @@ void backendSummary(std::ostream& out, const Page& page) {
     out << "</td></tr>\n";
   }
   out << "<tr><th colspan=\"6\">all backends</th>";
-  for (const std::string& verdict : verdictNames()) out << "<td class=\"n\">" << totals[verdict] << "</td>";
+  for (const comparison::Verdict column : columns)
+    out << "<td class=\"n\">" << totals[std::string(comparison::verdictName(column))] << "</td>";
   out << "<td colspan=\"3\"></td></tr>\n</table>\n";
 }
 
@@ -143,7 +163,8 @@ void mutantTable(std::ostream& out, const Page& page) {
         break;
       }
   long long killed = 0;
-  for (const Json& m : mutants) killed += textField(m, "status") == "killed";
+  for (const Json& m : mutants)
+    killed += comparison::parseMutantStatus(textField(m, "status")) == comparison::MutantStatus::Killed;
   out << "<p>" << killed << " of " << mutants.size()
       << " mutant runs killed. A mutant is a deliberately wrong variant of the model (SPEC 7); "
          "it is killed when at least one scene fails with it.</p>\n<table>\n<tr><th>mutant</th><th>what</th>";

@@ -9,6 +9,11 @@
 namespace reports::html {
 namespace {
 
+// Frame verdicts are Pass or Fail; an unknown one is shown as not passing.
+bool framePassed(const Json& frame) {
+  return comparison::parseVerdict(textField(frame, "verdict")) == comparison::Verdict::Pass;
+}
+
 void figure(std::ostream& out, const Page& page, const std::string& runRelative, std::string_view label) {
   const std::string href = escapeText(imageHref(runRelative, page.runDir, page.reportDir));
   out << "<figure><a href=\"" << href << "\"><img src=\"" << href << "\" alt=\"" << escapeText(label) << ": "
@@ -101,8 +106,10 @@ void attentionSection(std::ostream& out, const Page& page, const Json& test) {
       anyImage = true;
       figure(out, page, textField(evidence, key), label);
     }
+  // A CI error (Crash, Timeout) is a test that did not run to its end.
+  const bool ended = outcomeOf(verdict) == Outcome::Error;
   if (anyImage) out << "</div>\n";
-  else out << "<p>No images: " << (verdict == "Crash" || verdict == "Timeout" ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
+  else out << "<p>No images: " << (ended ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
   if (!textField(evidence, "summary_json").empty())
     out << "<p>Comparison summary: <a href=\""
         << escapeText(imageHref(textField(evidence, "summary_json"), page.runDir, page.reportDir)) << "\">"
@@ -110,7 +117,7 @@ void attentionSection(std::ostream& out, const Page& page, const Json& test) {
   worstPixels(out, metrics);
   std::string frames;
   for (const Json& frame : arrayField(test, "frames"))
-    if (textField(frame, "verdict") != "Pass")
+    if (!framePassed(frame))
       frames += (frames.empty() ? "" : ", ") + formatField(frame, "frame") + " " + textField(frame, "verdict");
   if (!frames.empty()) out << "<p>Frames that did not pass: " << escapeText(frames) << "</p>\n";
   out << "</section>\n";
@@ -137,7 +144,8 @@ void detectedMismatchSections(std::ostream& out, const Page& page) {
   std::vector<const Json*> tests;
   for (const Json& test : arrayField(page.results, "tests")) {
     const Json& metrics = objectField(test, "metrics");
-    if (metrics.is_object() && metrics.value("expect_fail", false) && textField(test, "verdict") == "Pass")
+    const bool passed = comparison::parseVerdict(textField(test, "verdict")) == comparison::Verdict::Pass;
+    if (metrics.is_object() && metrics.value("expect_fail", false) && passed)
       tests.push_back(&test);
   }
   if (tests.empty()) return;

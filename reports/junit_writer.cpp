@@ -1,9 +1,10 @@
 #include "reports/junit_writer.h"
 
-#include "imaging/text_file.h"
+#include "imaging/atomic_file.h"
 #include "reports/html_escape.h"
 #include "reports/result_fields.h"
 
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -69,7 +70,7 @@ std::string testDetails(const Json& test) {
     out << "  (" << formatField(pixel, "x") << ", " << formatField(pixel, "y") << ") result " << triple(pixel, "result")
         << " reference " << triple(pixel, "reference") << " tolerance " << triple(pixel, "tolerance") << '\n';
   for (const Json& frame : arrayField(test, "frames"))
-    if (textField(frame, "verdict") != "Pass")
+    if (comparison::parseVerdict(textField(frame, "verdict")) != comparison::Verdict::Pass)
       out << "frame " << formatField(frame, "frame") << ": " << textField(frame, "verdict") << ", "
           << formatField(frame, "failing_pixels") << " failing, max error " << formatField(frame, "max_abs_error") << '\n';
   const Json& evidence = objectField(test, "evidence");
@@ -90,20 +91,32 @@ Case testCase(const Json& test) {
   const std::string message = lineOf(textField(test, "message"));
   const std::string metrics = metricsLine(objectField(test, "metrics"));
   const std::string reason = textField(test, "expected_reason");
-  if (verdict == "ExpectedFail") {
-    c.message = "ExpectedFail: " + (reason.empty() ? std::string("listed as an expected failure") : reason);
-    c.output = testDetails(test);
-  } else if (verdict == "UnexpectedPass") {
-    c.message = "UnexpectedPass: listed as an expected failure (" + reason + ") but passed; remove it from the list";
-    c.details = testDetails(test);
-  } else if (verdict == "NotSupported") {
-    c.message = "NotSupported" + (message.empty() ? "" : ": " + message);
-  } else if (verdict == "Pass") {
-  } else if (verdict == "QualityWarning") {
-    c.output = "QualityWarning: " + (message.empty() ? metrics : message) + "\n" + testDetails(test);
-  } else {
-    c.message = c.type + ": " + (message.empty() ? metrics : message);
-    c.details = testDetails(test);
+  using comparison::Verdict;
+  // An unknown verdict is reported like a Fail (outcomeOf made it a Failure).
+  switch (comparison::parseVerdict(verdict).value_or(Verdict::Fail)) {
+    case Verdict::ExpectedFail:
+      c.message = "ExpectedFail: " + (reason.empty() ? std::string("listed as an expected failure") : reason);
+      c.output = testDetails(test);
+      break;
+    case Verdict::UnexpectedPass:
+      c.message = "UnexpectedPass: listed as an expected failure (" + reason + ") but passed; remove it from the list";
+      c.details = testDetails(test);
+      break;
+    case Verdict::NotSupported: c.message = "NotSupported" + (message.empty() ? "" : ": " + message); break;
+    case Verdict::Pass: break;
+    case Verdict::QualityWarning:
+      c.output = "QualityWarning: " + (message.empty() ? metrics : message) + "\n" + testDetails(test);
+      break;
+    case Verdict::Flake:  // a pass, with the failure before the retry shown beside it
+      c.output = "Flake: failed, then passed on a retry" + (message.empty() ? "" : ": " + message) + "\n" +
+                 testDetails(test);
+      break;
+    case Verdict::Fail:
+    case Verdict::Crash:
+    case Verdict::Timeout:
+      c.message = c.type + ": " + (message.empty() ? metrics : message);
+      c.details = testDetails(test);
+      break;
   }
   return c;
 }
@@ -118,19 +131,23 @@ Case mutantCase(const Json& mutant) {
   std::string killers;
   for (const Json& scene : arrayField(mutant, "killed_by")) killers += (killers.empty() ? "" : ", ") + formatValue(scene);
   const std::string what = textField(mutant, "what");
-  if (status == "killed") {
-    c.outcome = Outcome::Pass;
-    c.output = what + "\nkilled by: " + killers + "\n";
-  } else if (status == "NotSupported") {
-    c.outcome = Outcome::Skipped;
-    c.message = "NotSupported";
-  } else if (status == "Crash" || status == "Timeout") {
-    c.outcome = Outcome::Error;
-    c.message = status + ": the mutant's run did not finish; it proves nothing (" + what + ")";
-  } else {
-    c.outcome = Outcome::Failure;
-    c.message = (status == "survived" ? "survived: no scene caught this wrong variant of the model (" + what + ")"
-                                      : "unknown mutant status \"" + status + "\"");
+  c.outcome = mutantOutcome(status);
+  using comparison::MutantStatus;
+  const std::optional<MutantStatus> known = comparison::parseMutantStatus(status);
+  if (!known) {
+    c.message = "unknown mutant status \"" + status + "\"";
+    return c;
+  }
+  switch (*known) {
+    case MutantStatus::Killed: c.output = what + "\nkilled by: " + killers + "\n"; break;
+    case MutantStatus::NotSupported: c.message = "NotSupported"; break;
+    case MutantStatus::Crash:
+    case MutantStatus::Timeout:
+      c.message = status + ": the mutant's run did not finish; it proves nothing (" + what + ")";
+      break;
+    case MutantStatus::Survived:
+      c.message = "survived: no scene caught this wrong variant of the model (" + what + ")";
+      break;
   }
   return c;
 }
@@ -188,12 +205,13 @@ std::vector<Suite> suites(const Json& results) {
       for (const Json& test : arrayField(results, "tests"))
         if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test));
       const std::string status = textField(backend, "status");
-      if (suite.cases.empty() && status != "ran") {
+      const bool ran = comparison::parseBackendStatus(status) == comparison::BackendStatus::Ran;
+      if (suite.cases.empty() && !ran) {
         Case c;
         c.classname = "backend";
         c.name = "backend." + backendName;
         c.type = status.empty() ? "unknown" : status;
-        c.outcome = status == "NotSupported" ? Outcome::Skipped : Outcome::Error;
+        c.outcome = backendOutcome(status);
         c.message = c.type + (textField(backend, "message").empty() ? "" : ": " + textField(backend, "message"));
         suite.cases.push_back(c);
       }

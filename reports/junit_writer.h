@@ -17,7 +17,8 @@ namespace reports {
 //   ExpectedFail                             <skipped message="ExpectedFail: reason">
 //                                            (pytest's xfail convention: a known
 //                                            failure is not a pass, and must not block)
-//   QualityWarning, Pass                     pass; QualityWarning with <system-out>
+//   QualityWarning, Flake, Pass              pass; QualityWarning and Flake with <system-out>
+// (the classification is comparison::ciOutcome, comparison/verdict.h).
 // A backend that did not run ("NotSupported" or "error") and has no tests
 // still shows, as one testcase "backend.BACKEND" (skipped or error).
 // Throws std::invalid_argument when `results` is not a results object.

@@ -86,22 +86,34 @@ std::string formatSeconds(double seconds) {
   return text;
 }
 
-const std::vector<std::string>& verdictNames() {
-  static const std::vector<std::string> names = {"Pass",  "Fail",    "QualityWarning", "NotSupported",
-                                                 "Crash", "Timeout", "ExpectedFail",   "UnexpectedPass"};
-  return names;
-}
-
 Outcome outcomeOf(std::string_view verdict) {
-  if (verdict == "Pass" || verdict == "QualityWarning") return Outcome::Pass;
-  if (verdict == "NotSupported" || verdict == "ExpectedFail") return Outcome::Skipped;
-  if (verdict == "Crash" || verdict == "Timeout") return Outcome::Error;
-  return Outcome::Failure;  // Fail, UnexpectedPass, and anything unknown
+  const auto known = comparison::parseVerdict(verdict);
+  return known ? comparison::ciOutcome(*known) : Outcome::Failure;
 }
 
 bool needsAttention(std::string_view verdict) {
-  if (verdict == "Pass" || verdict == "NotSupported" || verdict == "ExpectedFail") return false;
-  return true;  // Fail, Crash, Timeout, UnexpectedPass, QualityWarning, unknown
+  const auto known = comparison::parseVerdict(verdict);
+  return !known || comparison::needsAttention(*known);
+}
+
+bool mutantFailed(std::string_view status) {
+  const auto known = comparison::parseMutantStatus(status);
+  return !known || comparison::isRunFailure(*known);
+}
+
+Outcome mutantOutcome(std::string_view status) {
+  const auto known = comparison::parseMutantStatus(status);
+  return known ? comparison::ciOutcome(*known) : Outcome::Failure;
+}
+
+bool backendFailed(std::string_view status) {
+  const auto known = comparison::parseBackendStatus(status);
+  return !known || comparison::isRunFailure(*known);
+}
+
+Outcome backendOutcome(std::string_view status) {
+  const auto known = comparison::parseBackendStatus(status);
+  return known ? comparison::ciOutcome(*known) : Outcome::Error;
 }
 
 std::vector<std::string> backendOrder(const Json& results) {

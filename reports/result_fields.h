@@ -3,6 +3,9 @@
 // report of a run that broke half way still shows what is there.
 #pragma once
 
+#include "comparison/run_status.h"
+#include "comparison/verdict.h"
+
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -36,17 +39,18 @@ std::string formatField(const Json& object, std::string_view key, int digits = 4
 std::string formatMetric(const Json& metrics, std::string_view key, int digits = 4);
 std::string formatSeconds(double seconds);  // "12.345"
 
-// The verdicts in the order reports list them (SPEC 7 plus the two of
-// expected failures).
-const std::vector<std::string>& verdictNames();
-
-// What a verdict means to CI. Unknown verdicts count as failures: a report
-// must never turn something it does not understand into a pass.
-enum class Outcome { Pass, Failure, Error, Skipped };
-Outcome outcomeOf(std::string_view verdict);
-
-// Verdicts that get a section with evidence in the HTML report.
-bool needsAttention(std::string_view verdict);
+// A test's verdict, a mutant's or a backend's status, as results.json spells
+// it, read through comparison/verdict.h and run_status.h (where each known
+// word's meaning is defined). results.json is not trusted: a word those do
+// not know counts against the run, because a report must never turn
+// something it does not understand into a pass.
+using Outcome = comparison::CiOutcome;
+Outcome outcomeOf(std::string_view verdict);     // unknown: Failure
+bool needsAttention(std::string_view verdict);   // a section with evidence in the HTML report; unknown: true
+bool mutantFailed(std::string_view status);      // not killed, nor NotSupported; unknown: true
+Outcome mutantOutcome(std::string_view status);  // unknown: Failure
+bool backendFailed(std::string_view status);     // an error; unknown: true
+Outcome backendOutcome(std::string_view status); // unknown: Error
 
 // Backend suffixes: those of "backends" in order, then any that only tests or
 // mutants name, in order of first appearance.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 namespace reports::svg {
 namespace {
@@ -267,6 +268,31 @@ std::string render(const Plot& plot) {
   }
   out << "</g>\n</svg>\n";
   return out.str();
+}
+
+Point pointAt(double x, double y) {
+  Point p;
+  p.x = x;
+  p.y = y;
+  return p;
+}
+
+void SeriesBuilder::add(const std::string& name, const SeriesStyle& style, Point point) {
+  const auto [it, added] = index_.emplace(name, plot_.series.size());
+  if (added) {
+    Series s;
+    s.name = name;
+    s.colour = colour(style.colourIndex);
+    s.line = style.line;
+    s.dashed = style.dashed;
+    plot_.series.push_back(s);
+  }
+  plot_.series[it->second].points.push_back(std::move(point));
+}
+
+void sortPointsByX(Plot& plot) {
+  for (Series& s : plot.series)
+    std::stable_sort(s.points.begin(), s.points.end(), [](const Point& a, const Point& b) { return a.x < b.x; });
 }
 
 }  // namespace reports::svg

@@ -4,6 +4,8 @@
 // result is one <svg> element to put inside an HTML page.
 #pragma once
 
+#include <cstddef>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +49,35 @@ struct Plot {
 // The <svg> element; points with non-finite coordinates, or non-positive
 // ones on a log axis, are left out. Text is escaped.
 std::string render(const Plot& plot);
+
+// A point at (x, y), nothing else set.
+Point pointAt(double x, double y);
+
+// How SeriesBuilder starts a series.
+struct SeriesStyle {
+  std::size_t colourIndex = 0;  // colour(colourIndex)
+  bool line = true;
+  bool dashed = false;
+};
+
+// Turns points that each belong to a named group (a backend, a mode, a
+// quantity) into one series per group, in order of first appearance: how
+// every plot of the benchmark pages gets its series.
+class SeriesBuilder {
+ public:
+  explicit SeriesBuilder(Plot& plot) : plot_(plot) {}
+  // Adds `point` to the series `name`; the group's first point starts the
+  // series with `style`.
+  void add(const std::string& name, const SeriesStyle& style, Point point);
+
+ private:
+  Plot& plot_;
+  std::map<std::string, std::size_t> index_;
+};
+
+// The points of every series in ascending x (stable: equal x keep their
+// order), so that lines run left to right.
+void sortPointsByX(Plot& plot);
 
 // Distinct colours, by index (cycling).
 const std::string& colour(std::size_t index);

@@ -1,7 +1,8 @@
 #include "runner/bench_run.h"
 
-#include "imaging/text_file.h"
+#include "imaging/atomic_file.h"
 #include "reports/bench_report.h"
+#include "comparison/run_status.h"
 #include "runner/backend_combination.h"
 #include "runner/run_metadata.h"
 #include "runner/worker_process.h"
@@ -146,24 +147,25 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     const ProcessOutcome run = runBenchProcess(options, args, rawDir / (c.suffix + ".json"), rawDir / (c.suffix + ".log"));
     const Json benchmarks = run.output.is_object() ? run.output.value("benchmarks", Json::array()) : Json::array();
     const Json context = run.output.is_object() ? run.output.value("context", Json::object()) : Json::object();
-    std::string status = "ran", message;
+    comparison::BackendStatus status = comparison::BackendStatus::Ran;
+    std::string message;
     // Exit 3 (or nothing measured): the backend or driver is not here.
     if (run.exitStatus == 3 || (run.ok && benchmarks.empty())) {
-      status = "NotSupported";
+      status = comparison::BackendStatus::NotSupported;
       std::ifstream log(rawDir / (c.suffix + ".log"));
       std::getline(log, message);
     } else if (!run.ok) {
-      status = "error";
+      status = comparison::BackendStatus::Error;
       message = "the benchmark process ended with " + run.how + "; see raw/" + c.suffix + ".log";
       failed = true;
     }
-    anyRan = anyRan || status == "ran";
+    anyRan = anyRan || status == comparison::BackendStatus::Ran;
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     out << "bench: " << c.suffix << ": " << status << (message.empty() ? "" : " (" + message + ")") << ", "
         << benchmarks.size() << " entries, " << std::fixed << std::setprecision(1) << seconds << " s"
         << std::defaultfloat << std::endl;
     backends.push_back({{"backend", c.suffix},
-                        {"status", status},
+                        {"status", comparison::backendStatusName(status)},
                         {"message", message},
                         {"device", deviceFromContext(context, c.suffix)},
                         {"wall_s", seconds},

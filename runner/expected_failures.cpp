@@ -1,10 +1,10 @@
 #include "runner/expected_failures.h"
 
-#include <algorithm>
-#include <array>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 namespace runner {
 namespace {
@@ -16,9 +16,17 @@ std::string trim(std::string_view text) {
   return std::string(text.substr(first, last - first + 1));
 }
 
-// The statuses a baseline may expect: the failing verdicts of SPEC 7.
-// NotSupported is a skip already and never needs listing.
-constexpr std::array<std::string_view, 4> kExpectable = {"Fail", "Crash", "Timeout", "QualityWarning"};
+// "Fail, QualityWarning, Crash or Timeout", for the message about a line
+// whose status a baseline may not expect.
+std::string expectableNames() {
+  std::vector<std::string_view> names;
+  for (const comparison::Verdict verdict : comparison::kAllVerdicts)
+    if (comparison::isExpectable(verdict)) names.push_back(comparison::verdictName(verdict));
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    text += std::string(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+  return text;
+}
 
 }  // namespace
 
@@ -46,14 +54,14 @@ void ExpectedFailures::parse(const std::string& text, const std::string& sourceN
     const std::string test = trim(std::string_view(entry).substr(0, comma));
     const std::string status = trim(std::string_view(entry).substr(comma + 1));
     if (test.empty()) throw std::runtime_error(where + ": the test name is empty");
-    if (std::find(kExpectable.begin(), kExpectable.end(), status) == kExpectable.end())
-      throw std::runtime_error(where + ": unknown status '" + status +
-                               "'; expected Fail, Crash, Timeout or QualityWarning");
+    const std::optional<comparison::Verdict> verdict = comparison::parseVerdict(status);
+    if (!verdict || !comparison::isExpectable(*verdict))
+      throw std::runtime_error(where + ": unknown status '" + status + "'; expected " + expectableNames());
     if (reason.empty())
       throw std::runtime_error(where + ": '" + test + "' has no reason; write it after '#' on the same line");
     if (const auto it = entries_.find(test); it != entries_.end())
       throw std::runtime_error(where + ": '" + test + "' is listed twice (first at " + it->second.source + ")");
-    entries_.emplace(test, ExpectedFailure{status, reason, where});
+    entries_.emplace(test, ExpectedFailure{*verdict, reason, where});
   }
 }
 
@@ -62,10 +70,11 @@ const ExpectedFailure* ExpectedFailures::find(const std::string& test) const {
   return it == entries_.end() ? nullptr : &it->second;
 }
 
-std::string applyExpectation(const std::string& rawVerdict, const ExpectedFailure* expected) {
+comparison::Verdict applyExpectation(comparison::Verdict rawVerdict, const ExpectedFailure* expected) {
+  using comparison::Verdict;
   if (!expected) return rawVerdict;
-  if (rawVerdict == "Pass") return "UnexpectedPass";
-  if (rawVerdict == expected->status) return "ExpectedFail";
+  if (rawVerdict == Verdict::Pass) return Verdict::UnexpectedPass;
+  if (rawVerdict == expected->status) return Verdict::ExpectedFail;
   return rawVerdict;
 }
 

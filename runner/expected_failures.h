@@ -8,6 +8,8 @@
 //   stability.range-1e4.vulkan,Fail  # lavapipe flushes denormals in the range term
 #pragma once
 
+#include "comparison/verdict.h"
+
 #include <filesystem>
 #include <map>
 #include <stdexcept>
@@ -17,7 +19,7 @@
 namespace runner {
 
 struct ExpectedFailure {
-  std::string status;  // Fail | Crash | Timeout | QualityWarning
+  comparison::Verdict status = comparison::Verdict::Fail;  // one that comparison::isExpectable
   std::string reason;
   std::string source;  // file:line, for messages
 };
@@ -40,6 +42,6 @@ class ExpectedFailures {
 
 // The verdict after the baseline: raw Pass of a listed test is
 // UnexpectedPass; the listed status is ExpectedFail; anything else stays.
-std::string applyExpectation(const std::string& rawVerdict, const ExpectedFailure* expected);
+comparison::Verdict applyExpectation(comparison::Verdict rawVerdict, const ExpectedFailure* expected);
 
 }  // namespace runner

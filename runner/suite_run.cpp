@@ -1,12 +1,14 @@
 #include "runner/suite_run.h"
 
+#include "comparison/run_status.h"
+#include "comparison/verdict.h"
 #include "conformance/scene_catalogue.h"
 #include "lighting/scene_loader.h"
 #include "reports/html_report.h"
 #include "reports/junit_writer.h"
 #include "runner/expected_failures.h"
 #include "runner/run_metadata.h"
-#include "imaging/text_file.h"
+#include "imaging/atomic_file.h"
 #include "runner/worker_plan.h"
 #include "runner/worker_process.h"
 #include "shaders/shader_variant.h"
@@ -29,9 +31,9 @@ namespace {
 using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-const std::vector<std::string> kVerdictOrder = {"Pass",    "Fail",         "QualityWarning", "NotSupported",
-                                                "Crash",   "Timeout",      "ExpectedFail",   "UnexpectedPass"};
+using comparison::BackendStatus;
+using comparison::MutantStatus;
+using comparison::Verdict;
 
 struct CatalogueEntry {
   conformance::SceneFile file;
@@ -71,16 +73,18 @@ std::string lastLines(const fs::path& file, int count) {
 
 // What one combination's workers said: the device, and a result per task.
 struct CombinationOutcome {
-  std::string status = "ran";  // ran | NotSupported | error
+  BackendStatus status = BackendStatus::Ran;
   std::string message;
   Json device = nullptr;
   std::vector<Json> results;  // one per task, in plan order
   double wallSeconds = 0;
 };
 
-Json abnormalResult(const WorkerTask& task, const std::string& verdict, const std::string& message) {
-  return {{"test", task.test}, {"raw_verdict", verdict}, {"message", message}, {"metrics", nullptr},
-          {"frames", Json::array()}, {"popping_score", nullptr}, {"timings_ms", nullptr}, {"evidence", nullptr}};
+Json abnormalResult(const WorkerTask& task, Verdict verdict, const std::string& message) {
+  return {{"test", task.test},       {"raw_verdict", comparison::verdictName(verdict)},
+          {"message", message},      {"metrics", nullptr},
+          {"frames", Json::array()}, {"popping_score", nullptr},
+          {"timings_ms", nullptr},   {"evidence", nullptr}};
 }
 
 // Runs the plan in as many workers as it takes: a worker that dies or hangs
@@ -113,19 +117,21 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
       if (status != WorkerProcess::ReadStatus::Line && !backendUp) {
         const bool hung = status == WorkerProcess::ReadStatus::TimedOut;
         const std::string how = worker.finish(hung);
-        outcome.status = "error";
+        outcome.status = BackendStatus::Error;
         outcome.message = std::string(hung ? "the backend did not start within the timeout" : "the worker ended") +
                           " before its backend was up (" + how + "); its last output:\n" + lastLines(logFile, 8);
         for (; next < plan.tasks.size(); ++next)
-          outcome.results.push_back(abnormalResult(plan.tasks[next], hung ? "Timeout" : "Crash", outcome.message));
+          outcome.results.push_back(
+              abnormalResult(plan.tasks[next], hung ? Verdict::Timeout : Verdict::Crash, outcome.message));
         break;
       }
       if (status == WorkerProcess::ReadStatus::TimedOut) {
         const std::string how = worker.finish(true);
         const WorkerTask& task = plan.tasks[next];
-        outcome.results.push_back(abnormalResult(
-            task, "Timeout", "no result within " + std::to_string(options.timeoutSeconds) + " s; worker " + how));
-        out << "  Timeout " << task.test << "\n";
+        outcome.results.push_back(abnormalResult(task, Verdict::Timeout,
+                                                 "no result within " + std::to_string(options.timeoutSeconds) +
+                                                     " s; worker " + how));
+        out << "  " << Verdict::Timeout << " " << task.test << "\n";
         ++next;
         break;
       }
@@ -137,9 +143,9 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
         if (next < plan.tasks.size()) {
           const WorkerTask& task = plan.tasks[next];
           outcome.results.push_back(abnormalResult(
-              task, "Crash", "the worker ended during this test (" + how + "); its last output:\n" +
-                                 lastLines(logFile, 8)));
-          out << "  Crash " << task.test << " (" << how << ")\n";
+              task, Verdict::Crash, "the worker ended during this test (" + how + "); its last output:\n" +
+                                        lastLines(logFile, 8)));
+          out << "  " << Verdict::Crash << " " << task.test << " (" << how << ")\n";
           ++next;
         }
         break;
@@ -157,9 +163,9 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
       } else if (kind == "backend_unavailable" || kind == "backend_error") {
         // A backend that ran before and is gone now is an error, not a skip.
         const bool skip = kind == "backend_unavailable" && outcome.device.is_null();
-        outcome.status = skip ? "NotSupported" : "error";
+        outcome.status = skip ? BackendStatus::NotSupported : BackendStatus::Error;
         outcome.message = event.value("message", "");
-        const std::string verdict = skip ? "NotSupported" : "Crash";
+        const Verdict verdict = skip ? Verdict::NotSupported : Verdict::Crash;
         for (; next < plan.tasks.size(); ++next)
           outcome.results.push_back(abnormalResult(plan.tasks[next], verdict, outcome.message));
         stop = true;
@@ -178,17 +184,22 @@ CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& opti
   return outcome;
 }
 
+// A worker's raw verdict. Workers write only verdictName's words; a result
+// without one (or with any other) is from a worker that broke: a Crash.
+Verdict rawVerdictOf(const Json& result) {
+  return comparison::parseVerdict(result.value("raw_verdict", "")).value_or(Verdict::Crash);
+}
+
 Json testRecord(const CatalogueEntry& scene, const std::string& suffix, Json result,
-                const ExpectedFailures& expected) {
-  const std::string raw = result.value("raw_verdict", "Crash");
-  const ExpectedFailure* listed = expected.find(result.value("test", ""));
+                const ExpectedFailure* listed, Verdict verdict) {
+  const std::string raw = result.value("raw_verdict", std::string(comparison::verdictName(Verdict::Crash)));
   Json record = {{"name", result["test"]},
                  {"group", scene.file.group},
                  {"scene", scene.file.name},
                  {"scene_file", scene.file.path.string()},
                  {"description", scene.description},
                  {"backend", suffix},
-                 {"verdict", applyExpectation(raw, listed)},
+                 {"verdict", comparison::verdictName(verdict)},
                  {"raw_verdict", raw},
                  {"expected_reason", listed ? listed->reason : ""},
                  {"message", result.value("message", "")}};
@@ -197,38 +208,58 @@ Json testRecord(const CatalogueEntry& scene, const std::string& suffix, Json res
   return record;
 }
 
+struct MutantOutcome {
+  MutantStatus status;
+  Json record;
+};
+
 // A mutant is killed on a backend when at least one scene fails with it that
 // passes without it (`cleanVerdicts`: the model's raw verdict per test; with
 // --mutants-only it is empty and every failing scene counts).
-Json mutantRecord(const std::string& mutant, const std::string& suffix, const std::string& backendStatus,
-                  const std::vector<Json>& results, const std::map<std::string, std::string>& cleanVerdicts) {
+MutantOutcome mutantRecord(const std::string& mutant, const std::string& suffix, BackendStatus backendStatus,
+                           const std::vector<Json>& results, const std::map<std::string, Verdict>& cleanVerdicts) {
   Json killedBy = Json::array();
   Json evidence = nullptr;
   bool crashed = false, timedOut = false;
   for (const Json& r : results) {
-    const std::string raw = r.value("raw_verdict", "");
+    const Verdict raw = rawVerdictOf(r);
     const std::string test = r.value("test", "");
     const auto clean = cleanVerdicts.find(test);
-    if (raw == "Fail" && (clean == cleanVerdicts.end() || clean->second == "Pass")) {
+    if (raw == Verdict::Fail && (clean == cleanVerdicts.end() || clean->second == Verdict::Pass)) {
       killedBy.push_back(test.substr(0, test.rfind('.')));
       if (evidence.is_null() && !r["evidence"].is_null()) {
         evidence = r["evidence"];
         evidence["test"] = test;
       }
     }
-    crashed = crashed || raw == "Crash";
-    timedOut = timedOut || raw == "Timeout";
+    crashed = crashed || raw == Verdict::Crash;
+    timedOut = timedOut || raw == Verdict::Timeout;
   }
-  std::string status = !killedBy.empty() ? "killed"
-                       : backendStatus == "NotSupported" ? "NotSupported"
-                       : crashed ? "Crash"
-                       : timedOut ? "Timeout"
-                                  : "survived";
+  const MutantStatus status = !killedBy.empty()                            ? MutantStatus::Killed
+                              : backendStatus == BackendStatus::NotSupported ? MutantStatus::NotSupported
+                              : crashed                                      ? MutantStatus::Crash
+                              : timedOut                                     ? MutantStatus::Timeout
+                                                                             : MutantStatus::Survived;
   std::string what;
   for (const shaders::MutantName& m : shaders::mutantNames())
     if (m.name == mutant) what = m.what;
-  return {{"mutant", mutant}, {"what", what},         {"backend", suffix},
-          {"status", status}, {"killed_by", killedBy}, {"evidence", evidence}};
+  return {status, {{"mutant", mutant},
+                   {"what", what},
+                   {"backend", suffix},
+                   {"status", comparison::mutantStatusName(status)},
+                   {"killed_by", killedBy},
+                   {"evidence", evidence}}};
+}
+
+// results.json's "counts" of one backend, in report order.
+Json countsJson(const std::map<Verdict, int>& counted) {
+  Json counts = Json::object();
+  for (const Verdict verdict : comparison::kAllVerdicts) {
+    const auto it = counted.find(verdict);
+    const int n = it == counted.end() ? 0 : it->second;
+    if (n > 0 || comparison::listedWhenZero(verdict)) counts[std::string(comparison::verdictName(verdict))] = n;
+  }
+  return counts;
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -288,52 +319,53 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
 
     out << "run: " << combination.suffix << ": " << plan.tasks.size() << " test(s)" << std::endl;
     const CombinationOutcome outcome = runCombination(plan, options, logsDir, out);
-    anyRan = anyRan || outcome.status != "NotSupported";  // an error is present, and fails
+    anyRan = anyRan || outcome.status != BackendStatus::NotSupported;  // an error is present, and fails
 
-    Json counts = Json::object();
-    for (const std::string& v : kVerdictOrder) counts[v] = 0;
+    std::map<Verdict, int> counted;
     std::map<std::string, std::vector<Json>> mutantResults;
-    std::map<std::string, std::string> cleanVerdicts;
+    std::map<std::string, Verdict> cleanVerdicts;
     for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
       const WorkerTask& task = plan.tasks[i];
       if (task.mutant != "none") {
         mutantResults[task.mutant].push_back(outcome.results[i]);
         continue;
       }
-      cleanVerdicts[task.test] = outcome.results[i].value("raw_verdict", "");
-      Json record = testRecord(*sceneOfCase.at(task.test.substr(0, task.test.rfind('.'))), combination.suffix,
-                               outcome.results[i], expected);
-      const std::string verdict = record["verdict"];
-      counts[verdict] = counts[verdict].get<int>() + 1;
-      if (verdict == "Fail" || verdict == "Crash" || verdict == "Timeout" || verdict == "UnexpectedPass")
-        allGood = false;
-      tests.push_back(std::move(record));
+      const Json& result = outcome.results[i];
+      const Verdict raw = rawVerdictOf(result);
+      cleanVerdicts[task.test] = raw;
+      const ExpectedFailure* listed = expected.find(result.value("test", ""));
+      const Verdict verdict = applyExpectation(raw, listed);
+      ++counted[verdict];
+      if (comparison::isRunFailure(verdict)) allGood = false;
+      tests.push_back(testRecord(*sceneOfCase.at(task.test.substr(0, task.test.rfind('.'))), combination.suffix,
+                                 result, listed, verdict));
     }
     Json mutantCounts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
     for (const std::string& mutant : mutants) {
-      Json record = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
-      const std::string status = record["status"];
-      const char* bucket = status == "killed" ? "killed" : status == "survived" ? "survived" : "other";
+      MutantOutcome m = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
+      // mutant_counts: killed, survived, and "other" for the statuses that prove nothing.
+      const bool ownBucket = m.status == MutantStatus::Killed || m.status == MutantStatus::Survived;
+      const std::string bucket = ownBucket ? std::string(comparison::mutantStatusName(m.status)) : "other";
       mutantCounts[bucket] = mutantCounts[bucket].get<int>() + 1;
-      if (status != "killed" && status != "NotSupported") allGood = false;
-      mutantsJson.push_back(std::move(record));
+      if (comparison::isRunFailure(m.status)) allGood = false;
+      mutantsJson.push_back(std::move(m.record));
     }
-    if (outcome.status == "error") allGood = false;
+    if (comparison::isRunFailure(outcome.status)) allGood = false;
     backendsJson.push_back({{"backend", combination.suffix},
                             {"api_backend", combination.backend},
                             {"driver_option", combination.driver},
-                            {"status", outcome.status},
+                            {"status", comparison::backendStatusName(outcome.status)},
                             {"message", outcome.message},
                             {"device", outcome.device},
                             {"expected_failures_file", joined(expected.files())},
-                            {"counts", counts},
+                            {"counts", countsJson(counted)},
                             {"mutant_counts", mutantCounts},
                             {"wall_s", outcome.wallSeconds},
                             {"log", "logs/" + combination.suffix + ".log"}});
     out << "run: " << combination.suffix << ": " << outcome.status;
     if (!outcome.message.empty()) out << " (" << outcome.message << ")";
-    for (const std::string& v : kVerdictOrder)
-      if (counts[v].get<int>() > 0) out << ", " << counts[v].get<int>() << " " << v;
+    for (const Verdict verdict : comparison::kAllVerdicts)
+      if (counted[verdict] > 0) out << ", " << counted[verdict] << " " << verdict;
     if (!mutants.empty())
       out << "; mutants: " << mutantCounts["killed"].get<int>() << " killed, " << mutantCounts["survived"].get<int>()
           << " survived";

@@ -3,6 +3,7 @@
 #include "backends/expected_driver.h"
 #include "baking/bake.h"
 #include "comparison/comparison_report.h"
+#include "comparison/verdict.h"
 #include "conformance/scene_check.h"
 #include "lighting/scene_loader.h"
 
@@ -107,15 +108,15 @@ class Worker {
       try {
         runTask(task, result);
       } catch (const backends::NotSupportedError& e) {
-        result["raw_verdict"] = "NotSupported";
+        result["raw_verdict"] = comparison::verdictName(comparison::Verdict::NotSupported);
         result["message"] = e.what();
       } catch (const backends::DriverError& e) {
-        result["raw_verdict"] = "Crash";
+        result["raw_verdict"] = comparison::verdictName(comparison::Verdict::Crash);
         result["message"] = std::string("driver error: ") + e.what();
         emit(out_, result);
         return 4;
       } catch (const std::exception& e) {
-        result["raw_verdict"] = "Crash";
+        result["raw_verdict"] = comparison::verdictName(comparison::Verdict::Crash);
         result["message"] = std::string("internal error: ") + e.what();
       }
       emit(out_, result);
@@ -128,7 +129,7 @@ class Worker {
   int ensureBackend(const std::string& mutant) {
     if (backend_ && mutant == backendMutant_) return 0;
     backend_.reset();
-    const backends::BackendEntry* entry = backends::findCompiledBackend(plan_.combination.backend);
+    const backends::BackendEntry* entry = backends::findBuiltBackendEntry(plan_.combination.backend);
     try {
       if (!entry) throw backends::NotSupportedError("backend '" + plan_.combination.backend + "' is not built");
       backends::BackendOptions options;
@@ -171,8 +172,7 @@ class Worker {
     conformance::CheckOptions options;
     options.mutant = *shaders::mutantFromName(task.mutant);  // checked by ensureBackend
     const conformance::SceneCheck check = conformance::checkScene(references, *backend_, options);
-    const std::string verdict(comparison::verdictName(check.verdict));
-    result["raw_verdict"] = verdict;
+    result["raw_verdict"] = comparison::verdictName(check.verdict);
     result["message"] = "";
     result["metrics"] = metricsJson(check);
     result["frames"] = framesJson(check);

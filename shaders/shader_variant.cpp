@@ -54,4 +54,9 @@ std::string_view mutantName(Mutant mutant) {
   return "none";
 }
 
+lighting::VolumeRule volumeRule(Mutant mutant) {
+  return mutant == Mutant::PointVolumeOutsideOnly ? lighting::VolumeRule::OutsideOnlyMutant
+                                                  : lighting::VolumeRule::Model;
+}
+
 }  // namespace shaders

@@ -4,6 +4,8 @@
 // the mutants exist for tests only.
 #pragma once
 
+#include "lighting/deferred_lights.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -53,5 +55,9 @@ struct ShaderVariant {
   bool specialised = true;  // false: every feature on, whatever the frame uses
   Mutant mutant = Mutant::None;
 };
+
+// The rule the light pass draws volumes by under `mutant`: the only
+// pipeline-state mutant changes it, every other mutant leaves the model's.
+lighting::VolumeRule volumeRule(Mutant mutant);
 
 }  // namespace shaders

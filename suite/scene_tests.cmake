@@ -1,14 +1,9 @@
 # ctest tests driven by the scene files, through the real `lightcts` command.
 # Names follow SPEC 10: <group>.<name>.<what>; labels per group and per kind.
 
-# <test-name suffix>=<backend>=<driver>: every backend and Mesa driver pair
-# of SPEC 10's names.
-set(backend_combinations
-  "vulkan=vulkan=default"
-  "gl-egl=gl-egl=llvmpipe"
-  "gl-osmesa=gl-osmesa=llvmpipe"
-  "gl-egl-softpipe=gl-egl=softpipe"
-  "gl-osmesa-softpipe=gl-osmesa=softpipe")
+# backend_combinations: "<test-name suffix>=<backend>=<driver>", every backend
+# and Mesa driver pair of SPEC 10's names, from the one table in backends/.
+include(${PROJECT_SOURCE_DIR}/backends/backend_combinations.cmake)
 set(backend_test_environment
   "LIGHTCTS_VALIDATION=1"
   "LIGHTCTS_CACHE_DIR=${CMAKE_BINARY_DIR}/cache")

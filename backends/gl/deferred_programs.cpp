@@ -33,11 +33,7 @@ DeferredPrograms::Linked DeferredPrograms::build(const shaders::ConstantValues& 
 GlName DeferredPrograms::buildGbuffer(const shaders::ConstantValues& constants) const {
   GlName program = linkProgram(gl_, shaders::forwardVertexGlsl330(), shaders::gbufferFragmentGlsl330(), constants,
                                "the deferred G-buffer program");
-  bindUniformBlock(gl_, program.get(), "FrameBlock", kFrameBlockBinding);
-  bindUniformBlock(gl_, program.get(), "ObjectBlock", kObjectBlockBinding);
-  gl_.glUseProgram(program.get());
-  bindSampler(gl_, program.get(), "lightmapTexture", kLightmapTextureUnit);
-  bindSampler(gl_, program.get(), "shadowMaskTexture", kShadowMaskTextureUnit);
+  bindSceneObjectInterface(gl_, program.get());  // as the forward program
   return program;
 }
 

@@ -1,6 +1,7 @@
 #include "backends/gl/deferred_renderer.h"
 
 #include "backends/gl/forward_programs.h"
+#include "backends/gl/raster_state_gl.h"
 
 #include <algorithm>
 #include <cstring>
@@ -8,23 +9,19 @@
 namespace backends::gl {
 namespace {
 
-// The blend identities of SPEC 3.7: 0 for the sums, 1 for the ldr8 product.
-constexpr float kHdrClear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-constexpr float kLdr8Clear[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+// The G-buffer's clear: albedo.a = 0 marks the background for the light pass.
+constexpr float kGbufferClear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 
 }  // namespace
 
 DeferredRenderer::DeferredRenderer(const GlFunctions& gl, shaders::Mutant mutant)
-    : gl_(gl), mutant_(mutant), programs_(gl), targets_(gl) {
+    : gl_(gl), volumeRule_(shaders::volumeRule(mutant)), programs_(gl), targets_(gl) {
   volumeArray_ = makeVertexArray(gl_);
   emptyArray_ = makeVertexArray(gl_);
   volumeVertices_ = makeBuffer(gl_);
   lightUniforms_ = makeBuffer(gl_);
   frameUniforms_ = makeBuffer(gl_);
-  GLint alignment = 256;
-  gl_.glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
-  lightStride_ = (sizeof(lighting::GpuDeferredLightBlock) + std::size_t(alignment) - 1) / std::size_t(alignment) *
-                 std::size_t(alignment);
+  lightStride_ = uniformBlockStride(gl_, sizeof(lighting::GpuDeferredLightBlock));
   // deferred_light.vert's location 0: a vec4 position per vertex.
   gl_.glBindVertexArray(volumeArray_.get());
   gl_.glBindBuffer(GL_ARRAY_BUFFER, volumeVertices_.get());
@@ -50,8 +47,7 @@ void DeferredRenderer::beginFrame(const lighting::Frame& frame, int width, int h
   // A clear honours the depth mask, which the light pass turns off.
   gl_.glDepthMask(GL_TRUE);
   const float farDepth = 1.0f;
-  // albedo.a = 0 marks the background for the light pass.
-  for (int t = 0; t < kGbufferColourCount; ++t) gl_.glClearBufferfv(GL_COLOR, t, kHdrClear);
+  for (int t = 0; t < kGbufferColourCount; ++t) gl_.glClearBufferfv(GL_COLOR, t, kGbufferClear);
   gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
   gl_.check("preparing the deferred frame");
 }
@@ -86,40 +82,25 @@ void DeferredRenderer::uploadVolumes(const lighting::Frame& frame) {
   gl_.check("uploading the light volumes");
 }
 
-// SPEC 1, as forward: depth LESS with writes, back faces culled, no blending.
 void DeferredRenderer::drawGbuffer(GLuint program, const SceneDraws& scene, const BakedTextures& baked) {
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, targets_.gbufferFramebuffer());
   gl_.glViewport(0, 0, width_, height_);
-  gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthFunc(GL_LESS);
-  gl_.glDepthMask(GL_TRUE);
-  gl_.glDisable(GL_DEPTH_CLAMP);
-  gl_.glEnable(GL_CULL_FACE);
-  gl_.glCullFace(GL_BACK);
-  gl_.glFrontFace(GL_CCW);
-  gl_.glDisable(GL_BLEND);
+  applyOpaqueSurfaceState(gl_);  // SPEC 1, as forward
   gl_.glUseProgram(program);
   scene.drawObjects(baked);
 }
 
+// Each volume with the model's raster state (lighting::lightVolumeRasterState:
+// back faces behind or on the G-buffer's surface, which a ray through a pixel
+// meets exactly once, also with the camera inside), blended into the light
+// buffer from the blend's identity (lighting::lightBufferState).
 void DeferredRenderer::drawLights(GLuint program, const SceneDraws& scene) {
-  const bool ldr8 = buffer_ == lighting::DeferredBuffer::Ldr8;
+  const lighting::LightBufferState buffer = lighting::lightBufferState(buffer_);
+  const float clear[4] = {buffer.clearValue, buffer.clearValue, buffer.clearValue, buffer.clearValue};
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, targets_.lightFramebuffer());
   gl_.glViewport(0, 0, width_, height_);
-  gl_.glClearBufferfv(GL_COLOR, 0, ldr8 ? kLdr8Clear : kHdrClear);
-  gl_.glEnable(GL_BLEND);
-  gl_.glBlendEquation(GL_FUNC_ADD);
-  if (ldr8)
-    gl_.glBlendFunc(GL_DST_COLOR, GL_ZERO);  // buffer *= exp2(-c)
-  else
-    gl_.glBlendFunc(GL_ONE, GL_ONE);  // buffer += c
-  // The G-buffer's depth is attached read-only in effect: tested, never written.
-  gl_.glEnable(GL_DEPTH_TEST);
-  gl_.glDepthMask(GL_FALSE);
-  // A volume reaching past the far plane still draws its back faces there
-  // (clamped to depth 1, where the background's cleared depth passes GEQUAL).
-  gl_.glEnable(GL_DEPTH_CLAMP);
-  gl_.glFrontFace(GL_CCW);
+  gl_.glClearBufferfv(GL_COLOR, 0, clear);
+  applyLightBlend(gl_, buffer.blend);
   gl_.glUseProgram(program);
   gl_.glBindVertexArray(volumeArray_.get());
   scene.bindFrameBlock();
@@ -130,34 +111,10 @@ void DeferredRenderer::drawLights(GLuint program, const SceneDraws& scene) {
     if (draws_[d].vertexCount == 0) continue;
     gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredLightBlockBinding, lightUniforms_.get(),
                           GLintptr(d * lightStride_), sizeof(lighting::GpuDeferredLightBlock));
-    setVolumeState(draws_[d].shape);
+    applyRasterState(gl_, lighting::lightVolumeRasterState(draws_[d].shape, volumeRule_));
     gl_.glDrawArrays(GL_TRIANGLES, draws_[d].firstVertex, draws_[d].vertexCount);
   }
   gl_.glBindVertexArray(0);
-  gl_.glDisable(GL_DEPTH_CLAMP);
-  gl_.glDisable(GL_BLEND);
-  gl_.glDepthMask(GL_TRUE);
-}
-
-// A ray through a pixel leaves a closed convex volume exactly once: its back
-// face, drawn where the G-buffer's surface is in front of it or on it, lights
-// that surface once, also with the camera inside (lighting/deferred_lights.h).
-void DeferredRenderer::setVolumeState(lighting::LightVolumeShape shape) const {
-  if (shape == lighting::LightVolumeShape::FullScreen) {
-    gl_.glDisable(GL_CULL_FACE);
-    gl_.glDepthFunc(GL_ALWAYS);
-    return;
-  }
-  gl_.glEnable(GL_CULL_FACE);
-  if (shape == lighting::LightVolumeShape::Icosphere && mutant_ == shaders::Mutant::PointVolumeOutsideOnly) {
-    // Mutant: front faces in front of the surface, which a camera inside the
-    // volume never sees.
-    gl_.glCullFace(GL_BACK);
-    gl_.glDepthFunc(GL_LEQUAL);
-    return;
-  }
-  gl_.glCullFace(GL_FRONT);
-  gl_.glDepthFunc(GL_GEQUAL);
 }
 
 void DeferredRenderer::drawComposite(GLuint program, GLuint outputFramebuffer) {

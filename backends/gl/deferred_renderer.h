@@ -1,14 +1,12 @@
 // The deferred path on OpenGL (SPEC 3.7, docs/model.md), three passes per
 // frame:
 //   G-buffer:  the scene's objects (scene_draws.h, as forward draws them)
-//              into the G-buffer (gbuffer_targets.h), depth LESS, back faces
-//              culled;
+//              into the G-buffer (gbuffer_targets.h), opaque-surface state;
 //   light:     one draw per lighting::lightVolumes entry into the light
-//              buffer, its GpuDeferredLightBlock bound per draw; additive
-//              (hdr32, hdr16) or multiplicative (ldr8) blending; back faces
-//              with depth GREATER_OR_EQUAL against the G-buffer depth, no
-//              depth writes, depth clamp on; the full-screen triangle with
-//              no culling and depth ALWAYS;
+//              buffer, its GpuDeferredLightBlock bound per draw, with the
+//              model's blend and raster state per volume (raster_state_gl.h
+//              applies lighting::lightBufferState and
+//              lighting::lightVolumeRasterState);
 //   composite: a full-screen triangle into the backend's output framebuffer,
 //              so readback does not know which path drew.
 #pragma once
@@ -51,12 +49,11 @@ class DeferredRenderer {
   void drawGbuffer(GLuint program, const SceneDraws& scene, const BakedTextures& baked);
   void drawLights(GLuint program, const SceneDraws& scene);
   void drawComposite(GLuint program, GLuint outputFramebuffer);
-  void setVolumeState(lighting::LightVolumeShape shape) const;
   void bindGbufferTextures() const;
   void unbindDeferredTextures() const;
 
   const GlFunctions& gl_;
-  shaders::Mutant mutant_;
+  lighting::VolumeRule volumeRule_;
   DeferredPrograms programs_;
   GbufferTargets targets_;
   GlName volumeArray_, volumeVertices_;

@@ -11,15 +11,19 @@ GLuint ForwardPrograms::program(const shaders::ConstantValues& constants) {
   return found->second.get();
 }
 
+void bindSceneObjectInterface(const GlFunctions& gl, GLuint program) {
+  bindUniformBlock(gl, program, "FrameBlock", kFrameBlockBinding);
+  bindUniformBlock(gl, program, "ObjectBlock", kObjectBlockBinding);
+  // The samplers get their units once, with the program current.
+  gl.glUseProgram(program);
+  bindSampler(gl, program, "lightmapTexture", kLightmapTextureUnit);
+  bindSampler(gl, program, "shadowMaskTexture", kShadowMaskTextureUnit);
+}
+
 GlName ForwardPrograms::build(const shaders::ConstantValues& constants) const {
   GlName program = linkProgram(gl_, shaders::forwardVertexGlsl330(), shaders::forwardFragmentGlsl330(), constants,
                                "the forward program");
-  bindUniformBlock(gl_, program.get(), "FrameBlock", kFrameBlockBinding);
-  bindUniformBlock(gl_, program.get(), "ObjectBlock", kObjectBlockBinding);
-  // The samplers get their units once, with the program current.
-  gl_.glUseProgram(program.get());
-  bindSampler(gl_, program.get(), "lightmapTexture", kLightmapTextureUnit);
-  bindSampler(gl_, program.get(), "shadowMaskTexture", kShadowMaskTextureUnit);
+  bindSceneObjectInterface(gl_, program.get());
   gl_.glUseProgram(0);
   gl_.check("linking the forward program");
   return program;

@@ -17,6 +17,11 @@ constexpr GLuint kObjectBlockBinding = 1;
 constexpr GLint kLightmapTextureUnit = 0;
 constexpr GLint kShadowMaskTextureUnit = 1;
 
+// The uniform blocks and samplers of every program that draws the scene's
+// objects through forward.vert (the forward program, the deferred G-buffer
+// program): bound to the bindings and units above. Leaves `program` current.
+void bindSceneObjectInterface(const GlFunctions& gl, GLuint program);
+
 class ForwardPrograms {
  public:
   explicit ForwardPrograms(const GlFunctions& gl) : gl_(gl) {}

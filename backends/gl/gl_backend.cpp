@@ -1,11 +1,13 @@
 #include "backends/gl/gl_backend.h"
 
+#include "backends/backend_combinations.h"
 #include "backends/gl/baked_textures.h"
 #include "backends/gl/deferred_renderer.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/gl_context.h"
 #include "backends/gl/gl_objects.h"
 #include "backends/gl/probe_in_child.h"
+#include "backends/gl/raster_state_gl.h"
 #include "backends/gl/scene_draws.h"
 
 #include <chrono>
@@ -174,19 +176,12 @@ class GlBackend final : public Backend {
     return frame.scene().pipeline.path == lighting::RenderPath::Deferred;
   }
 
-  // SPEC 1: depth LESS, back faces culled. OpenGL's window y points up like
-  // lighting::CameraView's NDC, so the meshes' counter-clockwise front faces
-  // stay counter-clockwise; SPIRV-Cross mapped clip z to -1..1.
+  // SPEC 1 (raster_state_gl.h); SPIRV-Cross mapped clip z to -1..1. The
+  // opaque state comes first: a depth clear honours the depth mask.
   void clearForward() {
     gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     gl_.glViewport(0, 0, width_, height_);
-    gl_.glEnable(GL_DEPTH_TEST);
-    gl_.glDepthFunc(GL_LESS);
-    gl_.glDepthMask(GL_TRUE);
-    gl_.glEnable(GL_CULL_FACE);
-    gl_.glCullFace(GL_BACK);
-    gl_.glFrontFace(GL_CCW);
-    gl_.glDisable(GL_BLEND);
+    applyOpaqueSurfaceState(gl_);
     const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // value 0 (SPEC 6), alpha 1 (SPEC 8)
     const float farDepth = 1.0f;
     gl_.glClearBufferfv(GL_COLOR, 0, background);
@@ -210,10 +205,15 @@ class GlBackend final : public Backend {
 
 // `lightcts backends`: each Mesa driver is tried in a child process, since
 // Mesa loads one driver per process.
-std::vector<DeviceInfo> listDrivers(const ContextFactory& makeContext, const BackendOptions& options) {
+// The drivers tried are those of the backend's combinations
+// (backends/backend_combinations.def).
+std::vector<DeviceInfo> listDrivers(const std::string& backend, const ContextFactory& makeContext,
+                                    const BackendOptions& options) {
   std::vector<DeviceInfo> devices;
   std::string reasons;
-  for (const std::string driver : {"llvmpipe", "softpipe"}) {
+  for (const BackendCombination& combination : backendCombinations()) {
+    const std::string& driver = combination.driver;
+    if (combination.backend != backend) continue;
     if (!options.driver.empty() && options.driver != driver) continue;
     BackendOptions probe = options;
     probe.driver = driver;
@@ -234,7 +234,9 @@ std::vector<DeviceInfo> listDrivers(const ContextFactory& makeContext, const Bac
 BackendEntry entryFor(const std::string& name, ContextFactory makeContext) {
   BackendEntry entry;
   entry.name = name;
-  entry.listDevices = [makeContext](const BackendOptions& options) { return listDrivers(makeContext, options); };
+  entry.listDevices = [name, makeContext](const BackendOptions& options) {
+    return listDrivers(name, makeContext, options);
+  };
   entry.create = [makeContext](const BackendOptions& options) -> std::unique_ptr<Backend> {
     return std::make_unique<GlBackend>(makeContext, options);
   };

@@ -1,5 +1,7 @@
 #include "backends/gl/gl_objects.h"
 
+#include "backends/aligned_stride.h"
+
 namespace backends::gl {
 namespace {
 
@@ -44,6 +46,12 @@ void setSingleLevelSampling(const GlFunctions& gl, GLint filter) {
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
   gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+std::size_t uniformBlockStride(const GlFunctions& gl, std::size_t blockSize) {
+  GLint alignment = 256;  // the largest alignment GL allows, should the query fail
+  gl.glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+  return alignedStride(blockSize, std::size_t(alignment));
 }
 
 }  // namespace backends::gl

@@ -5,6 +5,7 @@
 
 #include "backends/gl/gl_functions.h"
 
+#include <cstddef>
 #include <functional>
 #include <utility>
 
@@ -45,6 +46,11 @@ GlName makeFramebuffer(const GlFunctions& gl);
 GlName makeRenderbuffer(const GlFunctions& gl);
 GlName makeQuery(const GlFunctions& gl);
 GlName makeTexture(const GlFunctions& gl);
+
+// The distance between blocks of one uniform buffer bound with
+// glBindBufferRange: `blockSize` rounded up to the driver's
+// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT (backends/aligned_stride.h).
+std::size_t uniformBlockStride(const GlFunctions& gl, std::size_t blockSize);
 
 // For the 2D texture bound now: one level (complete without mipmaps), min and
 // mag filter `filter` (GL_LINEAR for the baked maps, GL_NEAREST for render

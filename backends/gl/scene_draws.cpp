@@ -66,10 +66,7 @@ void SceneDraws::writeUniforms(const lighting::Frame& frame) {
   if (!frameUniforms_.get()) {
     frameUniforms_ = makeBuffer(gl_);
     objectUniforms_ = makeBuffer(gl_);
-    GLint alignment = 256;
-    gl_.glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
-    objectStride_ = (sizeof(lighting::GpuObjectBlock) + std::size_t(alignment) - 1) / std::size_t(alignment) *
-                    std::size_t(alignment);
+    objectStride_ = uniformBlockStride(gl_, sizeof(lighting::GpuObjectBlock));
   }
   const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame);
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.get());

@@ -1,10 +1,13 @@
-// Every backend and Mesa driver pair of SPEC 10's test names, for tests that
-// run on each. gtest_discover_tests runs every test in its own process, so a
+// Every backend and Mesa driver pair of SPEC 10's test names (the one table
+// of backends/backend_combinations.def), for tests that run on each. gtest_discover_tests runs every test in its own process, so a
 // test parameterised by combination gets the driver it asks for (Mesa loads
 // one driver per process).
 #pragma once
 
 #include "backends/backend.h"
+#include "backends/backend_combinations.h"
+
+#include <gtest/gtest.h>
 
 #include <memory>
 #include <ostream>
@@ -13,27 +16,22 @@
 
 namespace backends::testing {
 
-struct Combination {
-  std::string suffix;   // the test-name suffix: vulkan, gl-egl-softpipe, ...
-  std::string backend;  // SPEC 8 name
-  std::string driver;   // --driver, empty for the backend's default
-};
+using Combination = backends::BackendCombination;
 
-// How gtest names a combination (test names stay readable).
+// How gtest prints a combination in messages.
 inline void PrintTo(const Combination& c, std::ostream* out) { *out << c.suffix; }
-
-inline std::vector<Combination> allCombinations() {
-  return {{"vulkan", "vulkan", ""},
-          {"gl_egl", "gl-egl", "llvmpipe"},
-          {"gl_osmesa", "gl-osmesa", "llvmpipe"},
-          {"gl_egl_softpipe", "gl-egl", "softpipe"},
-          {"gl_osmesa_softpipe", "gl-osmesa", "softpipe"}};
+// How gtest names a combination's test: its suffix as an identifier.
+inline std::string combinationTestName(const ::testing::TestParamInfo<Combination>& info) {
+  return info.param.identifier();
 }
+
+// Every combination of the one table (backends/backend_combinations.def).
+inline const std::vector<Combination>& allCombinations() { return backends::backendCombinations(); }
 
 // The backend with validation on, or null with `whyNot` set when it is not
 // supported here (a skip). Other failures throw.
 inline std::unique_ptr<Backend> createOrNull(const Combination& c, std::string& whyNot) {
-  const BackendEntry* entry = findCompiledBackend(c.backend);
+  const BackendEntry* entry = findBuiltBackendEntry(c.backend);
   if (!entry) {
     whyNot = c.backend + " is not built";
     return nullptr;

@@ -271,6 +271,6 @@ TEST_P(BakedMaps, ASceneWithoutItsBakeIsRefused) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryCombination, BakedMaps, ::testing::ValuesIn(backends::testing::allCombinations()),
-                         [](const auto& info) { return info.param.suffix; });
+                         backends::testing::combinationTestName);
 
 }  // namespace

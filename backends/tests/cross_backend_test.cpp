@@ -55,6 +55,6 @@ INSTANTIATE_TEST_SUITE_P(
                 all.end());
       return all;
     }()),
-    [](const auto& info) { return info.param.suffix; });
+    backends::testing::combinationTestName);
 
 }  // namespace

@@ -151,7 +151,7 @@ class Deferred : public ::testing::TestWithParam<Combination> {
   // The backend, or null after GTEST_SKIP (check with IsSkipped()).
   std::unique_ptr<backends::Backend> backend(shaders::Mutant mutant = shaders::Mutant::None) {
     const Combination& c = GetParam();
-    const backends::BackendEntry* entry = backends::findCompiledBackend(c.backend);
+    const backends::BackendEntry* entry = backends::findBuiltBackendEntry(c.backend);
     if (!entry) {
       whyNot_ = c.backend + " is not built";
       return nullptr;
@@ -299,6 +299,6 @@ TEST_P(Deferred, SwitchingLightBuffersLeavesNothingStale) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryCombination, Deferred, ::testing::ValuesIn(backends::testing::allCombinations()),
-                         [](const auto& info) { return info.param.suffix; });
+                         backends::testing::combinationTestName);
 
 }  // namespace

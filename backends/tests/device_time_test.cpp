@@ -80,6 +80,6 @@ TEST_P(DeviceTime, IsPresentPositiveAndWithinTheWallTimeOfDraw) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryCombination, DeviceTime, ::testing::ValuesIn(backends::testing::allCombinations()),
-                         [](const auto& info) { return info.param.suffix; });
+                         backends::testing::combinationTestName);
 
 }  // namespace

@@ -228,6 +228,6 @@ TEST_P(IndependentPlaneBackend, LegacyVertexLights) { checkOnBackend(legacyVerte
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, IndependentPlaneBackend,
                          ::testing::ValuesIn(backends::testing::allCombinations()),
-                         [](const auto& info) { return info.param.suffix; });
+                         backends::testing::combinationTestName);
 
 }  // namespace

@@ -43,6 +43,6 @@ TEST_P(TwoBackends, EachDrawsInItsOwnContextWhileTheOtherLivesAndDies) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryCombination, TwoBackends, ::testing::ValuesIn(backends::testing::allCombinations()),
-                         [](const auto& info) { return info.param.suffix; });
+                         backends::testing::combinationTestName);
 
 }  // namespace

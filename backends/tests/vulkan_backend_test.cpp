@@ -68,7 +68,7 @@ TEST(VulkanTimestamps, IntervalIsTheDifferenceModuloTheValidBitsTimesThePeriod) 
 std::unique_ptr<backends::Backend> createOrSkip(backends::BackendOptions options = {}) {
   options.validation = true;
   try {
-    return backends::findCompiledBackend("vulkan")->create(options);
+    return backends::findBuiltBackendEntry("vulkan")->create(options);
   } catch (const NotSupportedError& e) {
     return nullptr;
   }

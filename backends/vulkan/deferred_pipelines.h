@@ -10,40 +10,21 @@
 //
 // G-buffer pass: forward.vert + gbuffer.frag, four RGBA32F colour outputs and
 // D32 depth, LESS with writes, back faces culled (as forward).
-// Light pass: deferred_light.vert/.frag into the light buffer, blending ONE,
-// ONE (hdr) or DST_COLOR, ZERO (ldr8), against the G-buffer depth read-only;
-// its rasterisation and depth test depend on the volume (LightVolumeDraw).
+// Light pass: deferred_light.vert/.frag into the light buffer, against the
+// G-buffer depth read-only; its rasterisation, depth test and blend are the
+// model's (lighting::lightVolumeRasterState, lighting::lightBufferState),
+// translated by raster_translation.h.
 // Composite pass: a full-screen triangle, no depth, into the output image.
 // Pipelines are built on first use through the on-disk pipeline cache.
 #pragma once
 
-#include "backends/vulkan/pipeline_cache_file.h"
-#include "backends/vulkan/vulkan_device.h"
+#include "backends/vulkan/pipeline_builder.h"
 #include "lighting/deferred_lights.h"
-#include "shaders/shader_constants.h"
 
 #include <map>
 #include <tuple>
 
 namespace backends::vulkan {
-
-// How the light pass rasterises one volume.
-enum class LightVolumeDraw {
-  // Directional lights: the full-screen triangle, no culling, depth ALWAYS.
-  FullScreen,
-  // Point and spot volumes: back faces only, depth GREATER_OR_EQUAL against
-  // the G-buffer depth, depth clamp where the device has it. A ray through a
-  // pixel leaves a closed convex volume exactly once, so each surface point
-  // inside is lit once, also with the camera inside the volume.
-  BackFacesBehindSurface,
-  // Mutant point-volume-outside-only: front faces with depth LESS_OR_EQUAL,
-  // which draws nothing for a volume around the camera.
-  FrontFacesBeforeSurface,
-};
-
-// What a volume of `shape` is drawn with under `mutant`; the mutant affects
-// icosphere volumes only (points, and spots too wide for a pyramid).
-LightVolumeDraw lightVolumeDraw(lighting::LightVolumeShape shape, shaders::Mutant mutant);
 
 class DeferredPipelines {
  public:
@@ -56,29 +37,25 @@ class DeferredPipelines {
   const vk::raii::PipelineLayout& layout() const { return layout_; }
 
   const vk::raii::Pipeline& gbuffer(const shaders::ConstantValues& constants);
-  const vk::raii::Pipeline& light(const shaders::ConstantValues& constants, LightVolumeDraw draw,
-                                  vk::Format lightBufferFormat);
+  const vk::raii::Pipeline& light(const shaders::ConstantValues& constants, const lighting::RasterState& raster,
+                                  lighting::DeferredBuffer buffer);
   const vk::raii::Pipeline& composite(const shaders::ConstantValues& constants);
 
  private:
-  vk::raii::Pipeline createGBuffer(const shaders::ConstantValues& constants) const;
-  vk::raii::Pipeline createLight(const shaders::ConstantValues& constants, LightVolumeDraw draw,
-                                 vk::Format lightBufferFormat) const;
+  vk::raii::Pipeline createLight(const shaders::ConstantValues& constants, const lighting::RasterState& raster,
+                                 lighting::DeferredBuffer buffer) const;
   vk::raii::Pipeline createComposite(const shaders::ConstantValues& constants) const;
 
-  const VulkanDevice& device_;
-  const PipelineCacheFile& cache_;
+  PipelineBuilder builder_;
+  ShaderStages gbufferStages_;    // forward.vert, gbuffer.frag
+  ShaderStages lightStages_;      // deferred_light.vert/.frag
+  ShaderStages compositeStages_;  // deferred_composite.vert/.frag
   vk::raii::DescriptorSetLayout uniformsSetLayout_{nullptr};
   vk::raii::DescriptorSetLayout texturesSetLayout_{nullptr};
   vk::raii::PipelineLayout layout_{nullptr};
-  vk::raii::ShaderModule forwardVertex_{nullptr};
-  vk::raii::ShaderModule gbufferFragment_{nullptr};
-  vk::raii::ShaderModule lightVertex_{nullptr};
-  vk::raii::ShaderModule lightFragment_{nullptr};
-  vk::raii::ShaderModule compositeVertex_{nullptr};
-  vk::raii::ShaderModule compositeFragment_{nullptr};
   std::map<shaders::ConstantValues, vk::raii::Pipeline> gbuffer_;
-  std::map<std::tuple<shaders::ConstantValues, LightVolumeDraw, vk::Format>, vk::raii::Pipeline> light_;
+  std::map<std::tuple<shaders::ConstantValues, lighting::RasterState, lighting::DeferredBuffer>, vk::raii::Pipeline>
+      light_;
   std::map<shaders::ConstantValues, vk::raii::Pipeline> composite_;
 };
 

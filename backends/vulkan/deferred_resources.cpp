@@ -1,41 +1,29 @@
 #include "backends/vulkan/deferred_resources.h"
 
+#include "backends/aligned_stride.h"
+
 #include <algorithm>
 #include <array>
 
 namespace backends::vulkan {
-namespace {
-
-vk::DeviceSize roundUp(vk::DeviceSize value, vk::DeviceSize alignment) {
-  return (value + alignment - 1) / alignment * alignment;
-}
-
-}  // namespace
 
 DeferredUniforms::DeferredUniforms(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout,
                                    std::size_t objectCapacity, std::size_t lightCapacity)
-    : objectCapacity_(std::max<std::size_t>(objectCapacity, 1)),
+    : scene_(device, objectCapacity),
       lightCapacity_(std::max<std::size_t>(lightCapacity, 1)),
-      objectStride_(roundUp(sizeof(lighting::GpuObjectBlock), device.limits.minUniformBufferOffsetAlignment)),
-      lightStride_(roundUp(sizeof(lighting::GpuDeferredLightBlock), device.limits.minUniformBufferOffsetAlignment)),
-      frame_(device, sizeof(lighting::GpuFrameBlock), vk::BufferUsageFlagBits::eUniformBuffer),
-      objects_(device, objectStride_ * objectCapacity_, vk::BufferUsageFlagBits::eUniformBuffer),
+      lightStride_(alignedStride(sizeof(lighting::GpuDeferredLightBlock), device.limits.minUniformBufferOffsetAlignment)),
       lights_(device, lightStride_ * lightCapacity_, vk::BufferUsageFlagBits::eUniformBuffer),
       deferredFrame_(device, sizeof(lighting::GpuDeferredFrameBlock), vk::BufferUsageFlagBits::eUniformBuffer) {
   const std::array<vk::DescriptorPoolSize, 2> perSet{{{vk::DescriptorType::eUniformBuffer, 2},
                                                       {vk::DescriptorType::eUniformBufferDynamic, 2}}};
   descriptors_ = DescriptorSets(device.device, layout, perSet, 1);
   const vk::DescriptorSet set = *descriptors_.sets.front();
-
-  const vk::DescriptorBufferInfo frameInfo{*frame_.buffer, 0, sizeof(lighting::GpuFrameBlock)};
-  const vk::DescriptorBufferInfo objectInfo{*objects_.buffer, 0, sizeof(lighting::GpuObjectBlock)};
   const vk::DescriptorBufferInfo lightInfo{*lights_.buffer, 0, sizeof(lighting::GpuDeferredLightBlock)};
   const vk::DescriptorBufferInfo deferredFrameInfo{*deferredFrame_.buffer, 0, sizeof(lighting::GpuDeferredFrameBlock)};
+  const std::array<vk::WriteDescriptorSet, 2> sceneWrites = scene_.descriptorWrites(set);
   const std::array<vk::WriteDescriptorSet, 4> writes{{
-      {.dstSet = set, .dstBinding = 0, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
-       .pBufferInfo = &frameInfo},
-      {.dstSet = set, .dstBinding = 1, .descriptorCount = 1,
-       .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &objectInfo},
+      sceneWrites[0],
+      sceneWrites[1],
       {.dstSet = set, .dstBinding = 2, .descriptorCount = 1,
        .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &lightInfo},
       {.dstSet = set, .dstBinding = 3, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,

@@ -1,7 +1,8 @@
 // What the deferred passes read besides the scene's geometry and maps:
-//   DeferredUniforms: set 0 of deferred_pipelines.h (the frame block, one
-//     object block per object and one light block per light draw at the
-//     device's dynamic-offset alignment, the deferred frame block);
+//   DeferredUniforms: set 0 of deferred_pipelines.h: the scene's uniforms
+//     (scene_uniforms.h, as the forward pass has them), one light block per
+//     light draw at the device's dynamic-offset alignment, the deferred frame
+//     block;
 //   LightVolumeVertices: every light volume of the frame in one host-visible
 //     vertex buffer, written each frame (the volumes follow the camera);
 //   GBufferTextureSets: set 2, once for the light pass and once for the
@@ -14,6 +15,7 @@
 #include "backends/vulkan/gbuffer_targets.h"
 #include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
+#include "backends/vulkan/scene_uniforms.h"
 #include "lighting/deferred_lights.h"
 #include "lighting/gpu_packing.h"
 
@@ -28,29 +30,23 @@ class DeferredUniforms {
   DeferredUniforms(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout, std::size_t objectCapacity,
                    std::size_t lightCapacity);
 
-  std::size_t objectCapacity() const { return objectCapacity_; }
+  SceneUniforms& scene() { return scene_; }
+  std::size_t objectCapacity() const { return scene_.objectCapacity(); }
   std::size_t lightCapacity() const { return lightCapacity_; }
   const vk::raii::DescriptorSet& descriptorSet() const { return descriptors_.sets.front(); }
   // The two dynamic offsets of set 0, in binding order (object, light).
   std::array<std::uint32_t, 2> offsets(std::size_t object, std::size_t light) const {
-    return {std::uint32_t(object * objectStride_), std::uint32_t(light * lightStride_)};
+    return {scene_.objectOffset(object), std::uint32_t(light * lightStride_)};
   }
-  void write(const lighting::GpuFrameBlock& frame) { frame_.write(std::span(&frame, 1)); }
   void write(const lighting::GpuDeferredFrameBlock& frame) { deferredFrame_.write(std::span(&frame, 1)); }
-  void write(std::size_t object, const lighting::GpuObjectBlock& block) {
-    objects_.write(std::span(&block, 1), object * objectStride_);
-  }
   void write(std::size_t light, const lighting::GpuDeferredLightBlock& block) {
     lights_.write(std::span(&block, 1), light * lightStride_);
   }
 
  private:
-  std::size_t objectCapacity_;
+  SceneUniforms scene_;  // bindings 0 and 1, as in the forward pass
   std::size_t lightCapacity_;
-  vk::DeviceSize objectStride_;
   vk::DeviceSize lightStride_;
-  HostBuffer frame_;
-  HostBuffer objects_;
   HostBuffer lights_;
   HostBuffer deferredFrame_;
   DescriptorSets descriptors_;  // the one set 0 pointing at the buffers

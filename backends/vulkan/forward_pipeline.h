@@ -1,13 +1,10 @@
-// The forward pipeline: two descriptor set layouts (set 0, binding 0: the
-// frame block, binding 1: the object block with a dynamic offset per draw;
-// set 1: the object's baked maps, baked_textures.h), the embedded
-// SPIR-V stages, and one pipeline per set of specialization constants, built
-// on first use through the on-disk pipeline cache.
+// The forward pipeline: two descriptor set layouts (set 0: the scene's
+// uniforms, scene_uniforms.h; set 1: the object's baked maps,
+// baked_textures.h), forward.vert and forward.frag, and one pipeline per set
+// of specialization constants, built on first use (pipeline_builder.h).
 #pragma once
 
-#include "backends/vulkan/pipeline_cache_file.h"
-#include "backends/vulkan/vulkan_device.h"
-#include "shaders/shader_constants.h"
+#include "backends/vulkan/pipeline_builder.h"
 
 #include <map>
 
@@ -29,15 +26,11 @@ class ForwardPipelines {
   const vk::raii::Pipeline& pipeline(const shaders::ConstantValues& constants);
 
  private:
-  vk::raii::Pipeline create(const shaders::ConstantValues& constants) const;
-
-  const VulkanDevice& device_;
-  const PipelineCacheFile& cache_;
+  PipelineBuilder builder_;
+  ShaderStages stages_;
   vk::raii::DescriptorSetLayout setLayout_{nullptr};
   vk::raii::DescriptorSetLayout mapsSetLayout_{nullptr};
   vk::raii::PipelineLayout layout_{nullptr};
-  vk::raii::ShaderModule vertex_{nullptr};
-  vk::raii::ShaderModule fragment_{nullptr};
   std::map<shaders::ConstantValues, vk::raii::Pipeline> pipelines_;
 };
 

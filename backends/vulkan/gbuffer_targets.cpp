@@ -1,20 +1,12 @@
 #include "backends/vulkan/gbuffer_targets.h"
 
 #include "backends/vulkan/forward_pipeline.h"
+#include "lighting/scene_loader.h"
 
 #include <string>
 
 namespace backends::vulkan {
 namespace {
-
-std::string bufferName(lighting::DeferredBuffer buffer) {
-  switch (buffer) {
-    case lighting::DeferredBuffer::Hdr32: return "hdr32";
-    case lighting::DeferredBuffer::Hdr16: return "hdr16";
-    case lighting::DeferredBuffer::Ldr8: return "ldr8";
-  }
-  return "?";
-}
 
 void requireFeatures(const VulkanDevice& device, vk::Format format, vk::FormatFeatureFlags needed,
                      const std::string& what, const std::string& featureNames) {
@@ -53,7 +45,8 @@ void requireDeferredFormats(const VulkanDevice& device, lighting::DeferredBuffer
   requireFeatures(device, kDepthFormat, F::eDepthStencilAttachment, "the deferred G-buffer depth",
                   "DEPTH_STENCIL_ATTACHMENT");
   requireFeatures(device, lightBufferFormat(buffer), F::eColorAttachment | F::eColorAttachmentBlend | F::eSampledImage,
-                  "the " + bufferName(buffer) + " light buffer", "COLOR_ATTACHMENT_BLEND and SAMPLED_IMAGE");
+                  "the " + std::string(lighting::deferredBufferName(buffer)) + " light buffer",
+                  "COLOR_ATTACHMENT_BLEND and SAMPLED_IMAGE");
 }
 
 GBufferTargets::GBufferTargets(const VulkanDevice& device, vk::Extent2D size, lighting::DeferredBuffer buffer)

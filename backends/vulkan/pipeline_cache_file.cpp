@@ -1,11 +1,13 @@
 #include "backends/vulkan/pipeline_cache_file.h"
 
+#include "imaging/atomic_file.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iterator>
 #include <sstream>
-#include <unistd.h>
+#include <string_view>
 #include <vector>
 
 namespace backends::vulkan {
@@ -52,20 +54,8 @@ void PipelineCacheFile::save() const {
   if (path_.empty()) return;
   try {
     const std::vector<std::uint8_t> data = cache_.getData();
-    std::error_code ec;
-    std::filesystem::create_directories(path_.parent_path(), ec);
-    const std::filesystem::path temporary =
-        path_.parent_path() / ("." + path_.filename().string() + "." + std::to_string(::getpid()) + ".partial");
-    {
-      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-      out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size()));
-      if (!out) {
-        std::filesystem::remove(temporary, ec);
-        return;
-      }
-    }
-    std::filesystem::rename(temporary, path_, ec);
-    if (ec) std::filesystem::remove(temporary, ec);
+    imaging::writeFileAtomically(path_,
+                                 std::string_view(reinterpret_cast<const char*>(data.data()), data.size()));
   } catch (const std::exception&) {
     // Not being able to keep the cache only costs compile time next run.
   }

@@ -20,9 +20,9 @@ class PipelineCacheFile {
   explicit PipelineCacheFile(const VulkanDevice& device);
 
   const vk::raii::PipelineCache& cache() const { return cache_; }
-  // Writes the cache back (to a temporary name, then renamed, so parallel
-  // runs never read a half-written file). A cache that cannot be written only
-  // costs time; it is not an error.
+  // Writes the cache back (imaging/atomic_file.h: to a temporary name, then
+  // renamed, so parallel runs never read a half-written file). A cache that
+  // cannot be written only costs time; it is not an error.
   void save() const;
 
  private:

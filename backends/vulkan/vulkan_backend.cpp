@@ -7,10 +7,11 @@
 #include "backends/vulkan/frame_resources.h"
 #include "backends/vulkan/pipeline_cache_file.h"
 #include "backends/vulkan/readback.h"
+#include "backends/vulkan/scene_pass.h"
 #include "backends/vulkan/scene_geometry.h"
 #include "backends/vulkan/vulkan_device.h"
-#include "lighting/gpu_packing.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -79,12 +80,11 @@ class VulkanBackend final : public Backend {
       return;
     }
     const std::size_t objectCount = frame.scene().objects.size();
-    if (!uniforms_ || uniforms_->objectCapacity() < objectCount) {
+    if (!uniforms_ || uniforms_->scene().objectCapacity() < objectCount) {
       uniforms_.reset();
       uniforms_.emplace(device_, pipelines_.setLayout(), objectCount);
     }
-    uniforms_->write(lighting::packFrameBlock(frame));
-    for (std::size_t o = 0; o < objectCount; ++o) uniforms_->write(o, lighting::packObjectBlock(frame, int(o)));
+    uniforms_->scene().write(frame);
 
     const vk::raii::Pipeline& pipeline = pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
     submit(
@@ -144,69 +144,24 @@ class VulkanBackend final : public Backend {
   }
 
   void recordForwardPass(const vk::raii::CommandBuffer& cb, const vk::raii::Pipeline& pipeline) const {
-    const vk::Extent2D extent = target_->color.extent;
-    // Whatever the last submission did with the targets (a readback copy, the
-    // last pass's depth writes) happens before this pass overwrites them.
-    const std::array<vk::ImageMemoryBarrier2, 2> toAttachment{{
-        {.srcStageMask = vk::PipelineStageFlagBits2::eAllCommands,
-         .srcAccessMask = vk::AccessFlagBits2::eMemoryWrite,
-         .dstStageMask = vk::PipelineStageFlagBits2::eColorAttachmentOutput,
-         .dstAccessMask = vk::AccessFlagBits2::eColorAttachmentWrite,
-         .oldLayout = vk::ImageLayout::eUndefined,
-         .newLayout = vk::ImageLayout::eColorAttachmentOptimal,
-         .image = *target_->color.image,
-         .subresourceRange = {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}},
-        {.srcStageMask = vk::PipelineStageFlagBits2::eAllCommands,
-         .srcAccessMask = vk::AccessFlagBits2::eMemoryWrite,
-         .dstStageMask = vk::PipelineStageFlagBits2::eEarlyFragmentTests | vk::PipelineStageFlagBits2::eLateFragmentTests,
-         .dstAccessMask = vk::AccessFlagBits2::eDepthStencilAttachmentRead |
-                          vk::AccessFlagBits2::eDepthStencilAttachmentWrite,
-         .oldLayout = vk::ImageLayout::eUndefined,
-         .newLayout = vk::ImageLayout::eDepthAttachmentOptimal,
-         .image = *target_->depth.image,
-         .subresourceRange = {vk::ImageAspectFlagBits::eDepth, 0, 1, 0, 1}},
-    }};
-    cb.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = toAttachment.size(),
-                                           .pImageMemoryBarriers = toAttachment.data()});
-
+    const std::array<vk::ImageMemoryBarrier2, 2> toAttachment{discardToColorAttachment(target_->color),
+                                                              discardToDepthAttachment(target_->depth)};
+    recordBarriers(cb, toAttachment);
     // Background: value 0 (SPEC 6), alpha 1 (SPEC 8).
-    const vk::RenderingAttachmentInfo color{
-        .imageView = *target_->color.view,
-        .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
-        .loadOp = vk::AttachmentLoadOp::eClear,
-        .storeOp = vk::AttachmentStoreOp::eStore,
-        .clearValue = vk::ClearColorValue(std::array<float, 4>{0.0f, 0.0f, 0.0f, 1.0f}),
-    };
-    const vk::RenderingAttachmentInfo depth{
-        .imageView = *target_->depth.view,
-        .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
-        .loadOp = vk::AttachmentLoadOp::eClear,
-        .storeOp = vk::AttachmentStoreOp::eDontCare,
-        .clearValue = vk::ClearDepthStencilValue{1.0f, 0},
-    };
-    cb.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, extent},
-                                        .layerCount = 1,
-                                        .colorAttachmentCount = 1,
-                                        .pColorAttachments = &color,
-                                        .pDepthAttachment = &depth});
-    // Negative height: NDC y = +1 (up, lighting::CameraView) lands on
-    // framebuffer row 0, the top of the image.
-    cb.setViewport(0, vk::Viewport{.x = 0.0f, .y = float(extent.height), .width = float(extent.width),
-                                   .height = -float(extent.height), .minDepth = 0.0f, .maxDepth = 1.0f});
-    cb.setScissor(0, vk::Rect2D{{0, 0}, extent});
-    cb.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline);
-    cb.bindVertexBuffers(0, {*geometry_->vertices.buffer}, {vk::DeviceSize(0)});
-    cb.bindIndexBuffer(*geometry_->indices.buffer, 0, vk::IndexType::eUint32);
-    for (std::size_t o = 0; o < geometry_->objects.size(); ++o) {
-      const ObjectRange& range = geometry_->objects[o];
-      if (range.indexCount == 0) continue;
-      cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 0,
-                            {*uniforms_->descriptorSet()}, {uniforms_->objectOffset(o)});
-      // Every object binds set 1, maps or not: the shader declares it.
-      cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 1, {maps_->set(o)}, {});
-      cb.drawIndexed(range.indexCount, 1, range.firstIndex, range.vertexOffset, 0);
-    }
-    cb.endRendering();
+    const std::array<vk::RenderingAttachmentInfo, 1> color{clearedColor(target_->color, 0.0f, 1.0f)};
+    recordSceneObjectsPass(cb, *geometry_,
+                           {.colors = color,
+                            .depth = clearedDepth(target_->depth, vk::AttachmentStoreOp::eDontCare),
+                            .extent = target_->color.extent,
+                            .pipeline = *pipeline,
+                            .layout = *pipelines_.layout(),
+                            .bindUniforms =
+                                [&](const vk::raii::CommandBuffer& commands, std::size_t object) {
+                                  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics,
+                                                              *pipelines_.layout(), 0, {*uniforms_->descriptorSet()},
+                                                              {uniforms_->scene().objectOffset(object)});
+                                },
+                            .maps = &*maps_});
   }
 
   // Records with `record`, submits, waits, and turns any validation message
@@ -240,7 +195,7 @@ class VulkanBackend final : public Backend {
   std::optional<RenderTarget> target_;
   std::optional<SceneGeometry> geometry_;
   std::optional<SceneBakedTextures> maps_;
-  std::optional<UniformBuffers> uniforms_;
+  std::optional<ForwardUniforms> uniforms_;
   std::optional<DeferredRenderer> deferred_;
   std::optional<DrawTimestamps> timestamps_;  // empty when the queue writes no timestamps
   std::optional<double> lastDrawMilliseconds_;

@@ -22,15 +22,6 @@ void expectRgb(const imaging::Image& image, int x, int y, float r, float g, floa
   EXPECT_EQ(image.at(x, y, 2), b) << "at (" << x << ", " << y << ")";
 }
 
-TEST(VerdictName, SpecWords) {
-  EXPECT_EQ(verdictName(Verdict::Pass), "Pass");
-  EXPECT_EQ(verdictName(Verdict::Fail), "Fail");
-  EXPECT_EQ(verdictName(Verdict::QualityWarning), "QualityWarning");
-  EXPECT_EQ(verdictName(Verdict::NotSupported), "NotSupported");
-  EXPECT_EQ(verdictName(Verdict::Crash), "Crash");
-  EXPECT_EQ(verdictName(Verdict::Timeout), "Timeout");
-}
-
 TEST(CompareImages, EqualImagesPass) {
   const Images images = uniform(4, 3);
   const Comparison c = compareImages(images.result, images.reference, {});

@@ -659,6 +659,17 @@ TEST(JsonLocations, MalformedOrDeepTextStopsQuietly) {
   EXPECT_FALSE(locateJsonPointer(deep, tooDeep).has_value());
 }
 
+// deferredBufferName gives back the word the loader reads for each buffer.
+TEST(SceneLoader, DeferredBufferNamesAreTheSceneFileWords) {
+  const std::string head = R"({"lightcts": 1, "image": {}, "camera": {}, "objects": [], "lights": [], )";
+  for (const DeferredBuffer buffer : {DeferredBuffer::Hdr32, DeferredBuffer::Hdr16, DeferredBuffer::Ldr8}) {
+    const std::string name(deferredBufferName(buffer));
+    const std::string text = head + R"("pipeline": {"path": "deferred", "deferred_buffer": ")" + name + "\"}}";
+    EXPECT_EQ(loadSceneText(text, "scene.json").pipeline.deferredBuffer, buffer) << name;
+  }
+  EXPECT_EQ(deferredBufferName(DeferredBuffer::Hdr16), "hdr16");
+}
+
 TEST(SceneLoaderError, DeeplyNestedValueIsAnErrorNotACrash) {
   const std::string deep = std::string(100000, '[') + std::string(100000, ']');
   expectError(sceneWithLights(deep), "/lights/0", 3, 13, "expected an object, got an array");

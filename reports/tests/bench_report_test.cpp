@@ -1,6 +1,8 @@
 // The benchmark pages of the hand-written bench.json (bench_sample.h).
 #include "reports/bench_data.h"
 #include "reports/bench_report.h"
+#include "reports/html_page.h"
+#include "reports/html_report.h"
 #include "reports/tests/bench_sample.h"
 
 #include <gtest/gtest.h>
@@ -205,6 +207,28 @@ TEST(BenchReport, RejectsOtherFormats) {
   EXPECT_THROW(writeBenchReport(nlohmann::ordered_json::array(), fs::temp_directory_path() / "lightcts-never-written"),
                std::invalid_argument);
   EXPECT_FALSE(fs::exists(fs::temp_directory_path() / "lightcts-never-written"));
+}
+
+// The benchmark pages and the conformance report are written in the one page
+// frame (html_page.h): the same head and base stylesheet, each page adding only
+// its own rules, and the same end.
+TEST(BenchReport, SharesThePageFrameWithTheConformanceReport) {
+  std::ostringstream frame;
+  html::pageStart(frame, "title", "");
+  const std::string head = frame.str();
+  const std::string base = head.substr(head.find("<style>"), head.find("</style>") - head.find("<style>"));
+  const std::string bench = benchOverviewHtml(testing::sampleBench());
+  const std::string report = htmlReport(nlohmann::ordered_json::object(), "run", "run/report");
+  for (const std::string* page : {&bench, &report}) {
+    EXPECT_EQ(page->rfind("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>", 0), 0u);
+    EXPECT_EQ(page->find(base), page->find("<style>")) << "the base stylesheet opens the <style>";
+    EXPECT_EQ(count(*page, "<style>"), 1);
+    EXPECT_TRUE(page->ends_with("</body>\n</html>\n"));
+  }
+  EXPECT_NE(bench.find("svg.plot {"), std::string::npos);
+  EXPECT_EQ(report.find("svg.plot {"), std::string::npos) << "a page's own rules stay on that page";
+  EXPECT_NE(report.find(".v-Pass"), std::string::npos);
+  EXPECT_EQ(bench.find(".v-Pass"), std::string::npos);
 }
 
 TEST(BenchReport, EmptyBenchStillWritesPages) {

@@ -5,7 +5,7 @@
 //   bench_tool report BENCH.json DIR       the pages of a bench.json
 //   bench_tool compare BEFORE.json AFTER.json   exit 1 on a significant regression
 // Exit 2 on bad usage or input.
-#include "imaging/text_file.h"
+#include "imaging/atomic_file.h"
 #include "reports/bench_compare.h"
 #include "reports/bench_report.h"
 #include "reports/tests/bench_sample.h"

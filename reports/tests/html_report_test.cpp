@@ -126,6 +126,31 @@ TEST(HtmlReport, WritesIndexHtmlInTheReportFolderAndMarksMissingImages) {
   fs::remove_all(run);
 }
 
+// results.json is not trusted: a verdict the report does not know is a
+// failing test with a section of its own, never a pass.
+TEST(HtmlReport, UnknownVerdictIsAFailureThatNeedsAttention) {
+  auto results = testing::sampleResults();
+  results["tests"][0]["verdict"] = "Maybe";
+  const std::string html = htmlReport(results, "/runs/r1", "/runs/r1/report");
+  EXPECT_NE(html.find("<strong>6 failing tests, 2 mutant runs not killed, 0 backends with an error</strong>"),
+            std::string::npos);
+  EXPECT_NE(html.find("Tests that need attention (7)"), std::string::npos);
+  EXPECT_NE(html.find("<span class=\"v v-unknown\">Maybe</span>"), std::string::npos);
+}
+
+// The backend table has a Flake column only when a flake occurred, so the
+// report of a run without retries is what it was before Flake existed.
+TEST(HtmlReport, FlakeColumnOnlyWhenAFlakeOccurred) {
+  EXPECT_EQ(sampleHtml().find("<th>Flake</th>"), std::string::npos);
+  EXPECT_NE(sampleHtml().find("<th>UnexpectedPass</th><th>wall s</th>"), std::string::npos);
+  auto results = testing::sampleResults();
+  results["tests"][0]["verdict"] = "Flake";
+  const std::string html = htmlReport(results, "/runs/r1", "/runs/r1/report");
+  EXPECT_NE(html.find("<th>UnexpectedPass</th><th>Flake</th><th>wall s</th>"), std::string::npos);
+  EXPECT_NE(html.find("<strong>5 failing tests,"), std::string::npos) << "a flake passed in the end";
+  EXPECT_NE(html.find("Tests that need attention (7)"), std::string::npos) << "but someone should look at it";
+}
+
 TEST(HtmlReport, ToleratesAnEmptyRun) {
   const std::string html = htmlReport(nlohmann::ordered_json::object(), "run", "run/report");
   EXPECT_NE(html.find("No mutants in this run."), std::string::npos);

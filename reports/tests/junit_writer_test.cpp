@@ -117,6 +117,31 @@ TEST(Junit, UnknownVerdictFailsAndControlCharactersAreReplaced) {
   EXPECT_EQ(xml.find('\x07'), std::string::npos);
 }
 
+// results.json is not trusted: a word that comparison/verdict.h or
+// run_status.h does not know, a wrongly cased one included, is never a pass.
+TEST(Junit, WronglyCasedVerdictAndUnknownStatusesCountAgainstTheRun) {
+  auto results = testing::sampleResults();
+  results["tests"][0]["verdict"] = "pass";
+  results["mutants"][0]["status"] = "Killed";
+  results["backends"][2]["status"] = "Skipped";  // gl-osmesa, which has no tests
+  const std::string xml = junitXml(results);
+  expectCounts(suiteTag(xml, "vulkan"), {"4", "2", "1", "0"});
+  expectCounts(suiteTag(xml, "mutants"), {"4", "2", "1", "0"});
+  expectCounts(suiteTag(xml, "gl-osmesa"), {"1", "0", "1", "0"});
+  EXPECT_NE(xml.find("message=\"unknown mutant status &quot;Killed&quot;\""), std::string::npos) << xml;
+}
+
+TEST(Junit, FlakePassesWithOutput) {
+  auto results = testing::sampleResults();
+  results["tests"][0]["verdict"] = "Flake";
+  const std::string xml = junitXml(results);
+  expectCounts(suiteTag(xml, "vulkan"), {"4", "1", "1", "0"});
+  const std::size_t flake = xml.find("name=\"attenuation.point-d-0.vulkan\"");
+  ASSERT_NE(flake, std::string::npos);
+  const std::string body = xml.substr(flake, xml.find("</testcase>", flake) - flake);
+  EXPECT_NE(body.find("<system-out>Flake: failed, then passed on a retry"), std::string::npos) << body;
+}
+
 TEST(Junit, RejectsWhatIsNotAResultsFile) {
   EXPECT_THROW(junitXml(nlohmann::ordered_json::array()), std::invalid_argument);
   EXPECT_THROW(junitXml(nlohmann::ordered_json{{"format", "something-else"}}), std::invalid_argument);

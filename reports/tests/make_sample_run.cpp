@@ -7,7 +7,7 @@
 // --missing-image deletes one evidence image after the report is written,
 // for the test that the Chromium check notices.
 #include "imaging/image_files.h"
-#include "imaging/text_file.h"
+#include "imaging/atomic_file.h"
 #include "reports/html_report.h"
 #include "reports/junit_writer.h"
 #include "reports/tests/sample_results.h"

@@ -7,6 +7,8 @@
 namespace runner {
 namespace {
 
+using comparison::Verdict;
+
 std::string parseError(const std::string& text) {
   ExpectedFailures failures;
   try {
@@ -24,11 +26,12 @@ TEST(ExpectedFailures, ReadsTestStatusAndReasonSkippingComments) {
                  "drv.txt");
   const ExpectedFailure* fail = failures.find("limits.popping-64.vulkan");
   ASSERT_NE(fail, nullptr);
-  EXPECT_EQ(fail->status, "Fail");
+  EXPECT_EQ(fail->status, Verdict::Fail);
   EXPECT_EQ(fail->reason, "rounds the range term");
   EXPECT_EQ(fail->source, "drv.txt:3");
   ASSERT_NE(failures.find("stability.range-1e4.gl-egl"), nullptr);
   EXPECT_EQ(failures.find("stability.range-1e4.gl-egl")->reason, "slow");
+  EXPECT_EQ(failures.find("stability.range-1e4.gl-egl")->status, Verdict::Timeout);
   EXPECT_EQ(failures.find("limits.popping-64.gl-egl"), nullptr);
 }
 
@@ -40,14 +43,30 @@ TEST(ExpectedFailures, EveryLineNeedsAReasonAKnownStatusAndAComma) {
             std::string::npos);
 }
 
+// The statuses a line may name: the failing verdicts of SPEC 7, spelt exactly.
+TEST(ExpectedFailures, OnlyFailingVerdictsMayBeExpected) {
+  for (const char* status : {"Fail", "Crash", "Timeout", "QualityWarning"})
+    EXPECT_EQ(parseError(std::string("a.b.vulkan,") + status + " # x\n"), "") << status;
+  for (const char* status : {"Pass", "NotSupported", "ExpectedFail", "UnexpectedPass", "Flake", "fail", "CRASH"})
+    EXPECT_NE(parseError(std::string("a.b.vulkan,") + status + " # x\n").find(std::string("unknown status '") +
+                                                                             status + "'"),
+              std::string::npos)
+        << status;
+  EXPECT_NE(parseError("a.b.vulkan,Pass # x\n").find("expected Fail, QualityWarning, Crash or Timeout"),
+            std::string::npos);
+}
+
 TEST(ExpectedFailures, BaselineTurnsVerdicts) {
-  const ExpectedFailure fail{"Fail", "why", "f:1"};
-  EXPECT_EQ(applyExpectation("Fail", &fail), "ExpectedFail");
-  EXPECT_EQ(applyExpectation("Pass", &fail), "UnexpectedPass");
-  EXPECT_EQ(applyExpectation("Crash", &fail), "Crash");  // a different failure is not the known one
-  EXPECT_EQ(applyExpectation("NotSupported", &fail), "NotSupported");
-  EXPECT_EQ(applyExpectation("Fail", nullptr), "Fail");
-  EXPECT_EQ(applyExpectation("Pass", nullptr), "Pass");
+  const ExpectedFailure fail{Verdict::Fail, "why", "f:1"};
+  EXPECT_EQ(applyExpectation(Verdict::Fail, &fail), Verdict::ExpectedFail);
+  EXPECT_EQ(applyExpectation(Verdict::Pass, &fail), Verdict::UnexpectedPass);
+  EXPECT_EQ(applyExpectation(Verdict::Crash, &fail), Verdict::Crash);  // a different failure is not the known one
+  EXPECT_EQ(applyExpectation(Verdict::NotSupported, &fail), Verdict::NotSupported);
+  EXPECT_EQ(applyExpectation(Verdict::Fail, nullptr), Verdict::Fail);
+  EXPECT_EQ(applyExpectation(Verdict::Pass, nullptr), Verdict::Pass);
+  const ExpectedFailure timeout{Verdict::Timeout, "slow", "f:2"};
+  EXPECT_EQ(applyExpectation(Verdict::Timeout, &timeout), Verdict::ExpectedFail);
+  EXPECT_EQ(applyExpectation(Verdict::Fail, &timeout), Verdict::Fail);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "suite/bench/bench_scenes.h"
 
+#include "lighting/scene_loader.h"
+
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -8,25 +10,41 @@ namespace bench {
 
 using namespace lighting;
 
+namespace {
+
+// Each deferred mode and the light buffer it draws into: read both ways.
+struct DeferredMode {
+  FrameMode mode;
+  DeferredBuffer buffer;
+};
+constexpr DeferredMode kDeferredModes[] = {{FrameMode::DeferredHdr32, DeferredBuffer::Hdr32},
+                                           {FrameMode::DeferredHdr16, DeferredBuffer::Hdr16},
+                                           {FrameMode::DeferredLdr8, DeferredBuffer::Ldr8}};
+
+}  // namespace
+
 std::optional<lighting::DeferredBuffer> deferredBufferOf(FrameMode mode) {
-  switch (mode) {
-    case FrameMode::DeferredHdr32: return DeferredBuffer::Hdr32;
-    case FrameMode::DeferredHdr16: return DeferredBuffer::Hdr16;
-    case FrameMode::DeferredLdr8: return DeferredBuffer::Ldr8;
-    default: return std::nullopt;
-  }
+  for (const DeferredMode& d : kDeferredModes)
+    if (d.mode == mode) return d.buffer;
+  return std::nullopt;
 }
 
-std::string_view modeName(FrameMode mode) {
+std::string modeName(FrameMode mode) {
+  if (const auto buffer = deferredBufferOf(mode)) return std::string("deferred-").append(deferredBufferName(*buffer));
   switch (mode) {
     case FrameMode::AllLights: return "all-lights";
     case FrameMode::PerObject: return "per-object";
     case FrameMode::Legacy4x4: return "legacy-4+4";
-    case FrameMode::DeferredHdr32: return "deferred-hdr32";
-    case FrameMode::DeferredHdr16: return "deferred-hdr16";
-    case FrameMode::DeferredLdr8: return "deferred-ldr8";
+    default: return "?";
   }
-  return "?";
+}
+
+FrameMode frameModeOf(const Pipeline& pipeline) {
+  if (pipeline.path == RenderPath::Deferred)
+    for (const DeferredMode& d : kDeferredModes)
+      if (d.buffer == pipeline.deferredBuffer) return d.mode;
+  if (pipeline.profile == Profile::Legacy) return FrameMode::Legacy4x4;
+  return pipeline.lightsPerObject ? FrameMode::PerObject : FrameMode::AllLights;
 }
 
 namespace {

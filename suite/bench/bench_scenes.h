@@ -27,9 +27,14 @@ enum class FrameMode {
   DeferredLdr8,
 };
 
-std::string_view modeName(FrameMode mode);
+// all-lights, per-object, legacy-4+4, deferred-<buffer> (the buffer's
+// scene-format name, lighting::deferredBufferName).
+std::string modeName(FrameMode mode);
 // The light buffer of a deferred mode; nullopt for the forward modes.
 std::optional<lighting::DeferredBuffer> deferredBufferOf(FrameMode mode);
+// The mode a scene's pipeline is drawn in (a suite scene's benchmark name):
+// the inverse of what fieldScene sets for a mode.
+FrameMode frameModeOf(const lighting::Pipeline& pipeline);
 
 struct FieldSpec {
   int width = 1280, height = 720;

@@ -7,9 +7,10 @@
 
 namespace bench {
 
-// Our flags, taken out before Google Benchmark sees the rest:
-//   --backend=vulkan|gl-egl|gl-osmesa   (default vulkan)
-//   --driver=llvmpipe|softpipe          (GL only; softpipe runs a scaled-down set)
+// Our flags, taken out before Google Benchmark sees the rest (bench_settings.h):
+//   --backend=vulkan|gl-egl|gl-osmesa   (default vulkan; backends::specBackendNames)
+//   --driver=llvmpipe|softpipe          (a driver of that backend in backends/backend_combinations.def;
+//                                        a slow one, softpipe, runs a scaled-down set)
 //   --peak_gflops=X                     adds the limit_ms and flops_per_pixel_light counters
 //   --quick                             fewer points and repetitions (the ctest smoke test)
 //   --scenes=DIR                        suite scenes (default: the source tree's suite/scenes)

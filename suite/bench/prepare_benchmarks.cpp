@@ -22,7 +22,9 @@
 #include "lighting/frame.h"
 #include "lighting/gpu_packing.h"
 #include "lighting/shadow_mask_channels.h"
+#include "suite/bench/bench_reporters.h"
 #include "suite/bench/bench_scenes.h"
+#include "suite/bench/fresh_bake.h"
 #include "suite/bench/prepare_scenes.h"
 
 #include <benchmark/benchmark.h>
@@ -34,8 +36,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <unistd.h>
 
 namespace bench {
 namespace {
@@ -145,13 +145,6 @@ void shadowMask(benchmark::State& state) {
   state.counters["lights_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-// A bake that neither reads nor writes the bake cache: a fresh one, timed whole.
-baking::BakeOptions freshBake() {
-  baking::BakeOptions options;
-  options.useCache = false;
-  return options;
-}
-
 // The lightmapper on render_bench's lightmap scene (suite/bench/bench_scenes.h):
 // one plane of N x N texels under five baked point lights, one with a shadow
 // ray per texel (the `lightmap-shadow` scene of the frame benchmarks). A fresh bake every iteration (no cache), parallel over rows
@@ -188,24 +181,6 @@ benchmark::internal::Benchmark* curve(benchmark::internal::Benchmark* b, const s
   return common(b)->Complexity(benchmark::oAuto);
 }
 
-// The cv aggregate of a counter that is the same every repetition and 0
-// (`demoted` where nothing is demoted) is 0/0; JSON has no NaN, and nothing
-// varied: 0.
-template <class Base>
-class FiniteCounters : public Base {
- public:
-  using Base::Base;
-  void ReportRuns(const std::vector<benchmark::BenchmarkReporter::Run>& runs) override {
-    std::vector<benchmark::BenchmarkReporter::Run> finite = runs;
-    for (auto& run : finite) {
-      run.run_name.time_type.clear();  // "/real_time" of the bake curve: names carry no suffix
-      for (auto& [name, counter] : run.counters)
-        if (!std::isfinite(counter.value)) counter.value = 0;
-    }
-    Base::ReportRuns(finite);
-  }
-};
-
 void registerAll(const Settings& settings) {
   for (const bool perObject : {false, true}) {
     const std::string mode = perObject ? "per-object" : "all-lights";
@@ -238,23 +213,8 @@ int runPrepareBenchmarks(int argc, char** argv) {
   for (std::string& d : defaults) args.push_back(d.data());
   for (std::string_view g : given) args.push_back(const_cast<char*>(g.data()));
 
-  // The reporters (FiniteCounters): the console's unless --benchmark_format
-  // asks for another; the file's when --benchmark_out writes JSON (the
-  // default format). CSV keeps Google Benchmark's own.
-  std::string displayFormat = "console", outFormat = "json";
-  bool outFile = false;
-  for (std::string_view a : given) {
-    if (a.starts_with("--benchmark_format=")) displayFormat = std::string(a.substr(19));
-    else if (a.starts_with("--benchmark_out_format=")) outFormat = std::string(a.substr(23));
-    else if (a.starts_with("--benchmark_out=")) outFile = a.size() > 16;
-  }
-  std::unique_ptr<benchmark::BenchmarkReporter> display, file;
-  if (displayFormat == "console")
-    display = std::make_unique<FiniteCounters<benchmark::ConsoleReporter>>(
-        ::isatty(STDOUT_FILENO) ? benchmark::ConsoleReporter::OO_ColorTabular : benchmark::ConsoleReporter::OO_Tabular);
-  else if (displayFormat == "json")
-    display = std::make_unique<FiniteCounters<benchmark::JSONReporter>>();
-  if (outFile && outFormat == "json") file = std::make_unique<FiniteCounters<benchmark::JSONReporter>>();
+  // Plain names (the bake curve's "/real_time" dropped) and no NaN in the JSON.
+  const Reporters reporters = plainNameReporters(given);
 
   int count = int(args.size());
   args.push_back(nullptr);
@@ -266,7 +226,7 @@ int runPrepareBenchmarks(int argc, char** argv) {
   benchmark::Initialize(&count, args.data());
   if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
   benchmark::AddCustomContext("prepare_bench.set", settings.quick ? "quick" : "full");
-  benchmark::RunSpecifiedBenchmarks(display.get(), file.get());
+  benchmark::RunSpecifiedBenchmarks(reporters.display.get(), reporters.file.get());
   benchmark::Shutdown();
   return 0;
 }

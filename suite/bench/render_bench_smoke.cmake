@@ -21,19 +21,27 @@ macro(run_render_bench filter)
   string(JSON count LENGTH "${json}" benchmarks)
 endmacro()
 
-# Sets `name` to entry `i`'s name and `is_iteration` to whether it is a
-# measured run (not an aggregate); fails on an entry that reports an error.
-macro(read_bench_entry i)
-  string(JSON name GET "${json}" benchmarks ${i} name)
-  string(JSON runType GET "${json}" benchmarks ${i} run_type)
-  string(JSON error ERROR_VARIABLE noError GET "${json}" benchmarks ${i} error_message)
-  if(noError STREQUAL "NOTFOUND")
-    message(FATAL_ERROR "${name}: ${error}")
-  endif()
-  set(is_iteration FALSE)
-  if(runType STREQUAL "iteration")
-    set(is_iteration TRUE)
-  endif()
+# The counters of a frame benchmark compared with its ideal reference.
+set(error_counters err_rmse err_max_abs err_psnr_db err_perceptual_fail)
+
+# Sets `indices` to the entries that are measured runs (not aggregates) and
+# `names` to their names, in order; fails on an entry that reports an error.
+macro(measured_entries)
+  set(indices "")
+  set(names "")
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON name GET "${json}" benchmarks ${i} name)
+    string(JSON runType GET "${json}" benchmarks ${i} run_type)
+    string(JSON error ERROR_VARIABLE noError GET "${json}" benchmarks ${i} error_message)
+    if(noError STREQUAL "NOTFOUND")
+      message(FATAL_ERROR "${name}: ${error}")
+    endif()
+    if(runType STREQUAL "iteration")
+      list(APPEND indices ${i})
+      list(APPEND names "${name}")
+    endif()
+  endforeach()
 endmacro()
 
 # Fails unless entry `i` carries every counter named after it.

@@ -1,0 +1,36 @@
+// The five backend and driver combinations the suite runs, from the one table
+// in backend_combinations.def (which CMake reads too, for the ctest labels).
+// `suffix` ends SPEC 10's test names and is each combination's ctest label.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace backends {
+
+struct BackendCombination {
+  std::string suffix;   // vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe
+  std::string backend;  // SPEC 8 --backend: vulkan | gl-egl | gl-osmesa
+  std::string driver;   // --driver: "" (the backend's default), llvmpipe or softpipe
+
+  // softpipe renders about 150 times slower than llvmpipe: benchmarks and
+  // long tests scale down there.
+  bool isSlowDriver() const { return driver == "softpipe"; }
+  // The suffix as a C++ identifier (gtest parameter names): '-' becomes '_'.
+  std::string identifier() const;
+};
+
+// In table order.
+const std::vector<BackendCombination>& backendCombinations();
+
+// The combination with this suffix, or null.
+const BackendCombination* findCombination(std::string_view suffix);
+// The combination that `backend` with `driver` ("" for the default) selects,
+// or null when the backend has no such driver.
+const BackendCombination* findCombination(std::string_view backend, std::string_view driver);
+
+// "vulkan, gl-egl, ..." for messages that list what is accepted.
+std::string combinationSuffixList();
+
+}  // namespace backends

@@ -1,0 +1,95 @@
+#include "backends/vulkan/pipeline_builder.h"
+
+#include "backends/vulkan/forward_pipeline.h"
+#include "backends/vulkan/raster_translation.h"
+#include "backends/vulkan/scene_geometry.h"
+
+#include <array>
+
+namespace backends::vulkan {
+namespace {
+
+// Every specialization constant of features.glsl at its id; a stage ignores
+// the ids it does not declare.
+struct Specialization {
+  explicit Specialization(const shaders::ConstantValues& constants) {
+    for (std::uint32_t id = 0; id < shaders::kConstantCount; ++id)
+      entries[id] = vk::SpecializationMapEntry{.constantID = id, .offset = id * std::uint32_t(sizeof(std::int32_t)),
+                                               .size = sizeof(std::int32_t)};
+    info = vk::SpecializationInfo{.mapEntryCount = std::uint32_t(entries.size()), .pMapEntries = entries.data(),
+                                  .dataSize = sizeof(constants), .pData = constants.data()};
+  }
+  Specialization(const Specialization&) = delete;  // info points into entries
+
+  std::array<vk::SpecializationMapEntry, shaders::kConstantCount> entries;
+  vk::SpecializationInfo info;
+};
+
+vk::raii::ShaderModule shaderModule(const vk::raii::Device& device, std::span<const std::uint32_t> spirv) {
+  return vk::raii::ShaderModule(device,
+                                vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(), .pCode = spirv.data()});
+}
+
+}  // namespace
+
+ShaderStages::ShaderStages(const vk::raii::Device& device, std::span<const std::uint32_t> vertexSpirv,
+                           std::span<const std::uint32_t> fragmentSpirv)
+    : vertex(shaderModule(device, vertexSpirv)), fragment(shaderModule(device, fragmentSpirv)) {}
+
+vk::raii::Pipeline PipelineBuilder::build(const vk::raii::PipelineLayout& layout, const ShaderStages& shaderStages,
+                                          const shaders::ConstantValues& constants,
+                                          const PassPipelineState& pass) const {
+  const Specialization specialization(constants);
+  const std::array<vk::PipelineShaderStageCreateInfo, 2> stages{{
+      {.stage = vk::ShaderStageFlagBits::eVertex, .module = *shaderStages.vertex, .pName = "main",
+       .pSpecializationInfo = &specialization.info},
+      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *shaderStages.fragment, .pName = "main",
+       .pSpecializationInfo = &specialization.info},
+  }};
+  const vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = vk::PrimitiveTopology::eTriangleList};
+  const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
+  const vk::PipelineRasterizationStateCreateInfo rasterization = rasterizationInfo(pass.raster);
+  // SPEC 1: one sample, at the pixel centre.
+  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
+  const vk::PipelineDepthStencilStateCreateInfo depth =
+      depthStencilInfo(pass.raster, pass.depthFormat != vk::Format::eUndefined);
+  const vk::PipelineColorBlendStateCreateInfo blend{.attachmentCount = std::uint32_t(pass.blend.size()),
+                                                    .pAttachments = pass.blend.data()};
+  const std::array<vk::DynamicState, 2> dynamicStates{vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+  const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = dynamicStates.size(),
+                                                   .pDynamicStates = dynamicStates.data()};
+  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = std::uint32_t(pass.colorFormats.size()),
+                                                  .pColorAttachmentFormats = pass.colorFormats.data(),
+                                                  .depthAttachmentFormat = pass.depthFormat};
+  const vk::GraphicsPipelineCreateInfo info{.pNext = &rendering,
+                                            .stageCount = stages.size(),
+                                            .pStages = stages.data(),
+                                            .pVertexInputState = pass.vertexInput,
+                                            .pInputAssemblyState = &inputAssembly,
+                                            .pViewportState = &viewport,
+                                            .pRasterizationState = &rasterization,
+                                            .pMultisampleState = &multisample,
+                                            .pDepthStencilState = &depth,
+                                            .pColorBlendState = &blend,
+                                            .pDynamicState = &dynamic,
+                                            .layout = *layout};
+  return vk::raii::Pipeline(device_.device, cache_.cache(), info);
+}
+
+vk::raii::Pipeline PipelineBuilder::buildSceneObjects(const vk::raii::PipelineLayout& layout,
+                                                      const ShaderStages& stages,
+                                                      const shaders::ConstantValues& constants,
+                                                      const std::vector<vk::Format>& colorFormats) const {
+  const SceneVertexInput sceneVertices;
+  const vk::PipelineVertexInputStateCreateInfo vertexInput = sceneVertices.state();
+  const PassPipelineState pass{
+      .vertexInput = &vertexInput,
+      .raster = lighting::kOpaqueSurfaceState,
+      .blend = std::vector<vk::PipelineColorBlendAttachmentState>(colorFormats.size(), unblendedAttachment()),
+      .colorFormats = colorFormats,
+      .depthFormat = kDepthFormat,
+  };
+  return build(layout, stages, constants, pass);
+}
+
+}  // namespace backends::vulkan

@@ -1,0 +1,96 @@
+#include "comparison/verdict.h"
+
+#include <stdexcept>
+
+namespace comparison {
+
+std::string_view verdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Pass: return "Pass";
+    case Verdict::Fail: return "Fail";
+    case Verdict::QualityWarning: return "QualityWarning";
+    case Verdict::NotSupported: return "NotSupported";
+    case Verdict::Crash: return "Crash";
+    case Verdict::Timeout: return "Timeout";
+    case Verdict::ExpectedFail: return "ExpectedFail";
+    case Verdict::UnexpectedPass: return "UnexpectedPass";
+    case Verdict::Flake: return "Flake";
+  }
+  throw std::invalid_argument("verdictName: not a Verdict");
+}
+
+std::optional<Verdict> parseVerdict(std::string_view name) {
+  for (const Verdict verdict : kAllVerdicts)
+    if (verdictName(verdict) == name) return verdict;
+  return std::nullopt;
+}
+
+std::ostream& operator<<(std::ostream& out, Verdict verdict) { return out << verdictName(verdict); }
+
+// The switches below list every verdict without a default, so that the
+// compiler (-Wswitch) points at each of them when a verdict is added.
+bool isRunFailure(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Fail:
+    case Verdict::Crash:
+    case Verdict::Timeout:
+    case Verdict::UnexpectedPass: return true;
+    case Verdict::Pass:
+    case Verdict::QualityWarning:
+    case Verdict::NotSupported:
+    case Verdict::ExpectedFail:
+    case Verdict::Flake: return false;
+  }
+  return true;
+}
+
+CiOutcome ciOutcome(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Pass:
+    case Verdict::QualityWarning:
+    case Verdict::Flake: return CiOutcome::Pass;
+    // pytest's xfail convention: a known failure is not a pass, and must not block.
+    case Verdict::NotSupported:
+    case Verdict::ExpectedFail: return CiOutcome::Skipped;
+    // The test did not run to its end.
+    case Verdict::Crash:
+    case Verdict::Timeout: return CiOutcome::Error;
+    case Verdict::Fail:
+    case Verdict::UnexpectedPass: return CiOutcome::Failure;
+  }
+  return CiOutcome::Failure;
+}
+
+bool needsAttention(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Pass:
+    case Verdict::NotSupported:
+    case Verdict::ExpectedFail: return false;
+    case Verdict::Fail:
+    case Verdict::QualityWarning:
+    case Verdict::Crash:
+    case Verdict::Timeout:
+    case Verdict::UnexpectedPass:
+    case Verdict::Flake: return true;
+  }
+  return true;
+}
+
+bool isExpectable(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Fail:
+    case Verdict::QualityWarning:
+    case Verdict::Crash:
+    case Verdict::Timeout: return true;
+    case Verdict::Pass:
+    case Verdict::NotSupported:
+    case Verdict::ExpectedFail:
+    case Verdict::UnexpectedPass:
+    case Verdict::Flake: return false;
+  }
+  return false;
+}
+
+bool listedWhenZero(Verdict verdict) { return verdict != Verdict::Flake; }
+
+}  // namespace comparison

@@ -1,0 +1,30 @@
+// How a pass rasterises, as API-neutral data (the way VK-GL-CTS's reference
+// renderer carries an rr::RenderState and Filament a RasterState): the model
+// decides it here, once; the Vulkan and OpenGL backends only translate the
+// enums (backends/vulkan/raster_translation.h, backends/gl/raster_state_gl.h).
+// Front faces are counter-clockwise in the image (SPEC 1) for every pass.
+#pragma once
+
+#include <compare>
+
+namespace lighting {
+
+enum class CullMode { None, Front, Back };
+enum class DepthCompare { Always, Less, LessOrEqual, GreaterOrEqual };
+
+struct RasterState {
+  CullMode cull = CullMode::Back;
+  DepthCompare depthTest = DepthCompare::Less;
+  bool depthWrite = true;
+  // Fragments beyond the far plane are clamped to it instead of clipped.
+  bool depthClamp = false;
+
+  auto operator<=>(const RasterState&) const = default;  // pipeline caches key on it
+};
+
+// SPEC 1: opaque surfaces, depth LESS with writes, back faces culled. The
+// forward pass and the deferred G-buffer pass draw the scene's objects with
+// it (and a depth-only shadow-map pass would too).
+inline constexpr RasterState kOpaqueSurfaceState{CullMode::Back, DepthCompare::Less, true, false};
+
+}  // namespace lighting

@@ -1,0 +1,142 @@
+// The cost curves: median frame time against each curve's load (lights,
+// pixels, objects), whiskers from the minimum to the maximum repetition; and
+// the CPU preparation curves with Google Benchmark's complexity fits.
+#include "reports/bench_sections.h"
+#include "reports/bench_table.h"
+#include "reports/html_escape.h"
+#include "reports/svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace reports::benchpages {
+namespace {
+
+// `e` (median, min-max whiskers) at its curve x, in the line of `group`.
+void addCurvePoint(svg::SeriesBuilder& series, const std::string& group, std::size_t colourIndex,
+                   const BenchEntry& e) {
+  svg::Point p = svg::pointAt(*curveX(e.name.x), *e.medianMs);
+  p.yLow = e.minMs;
+  p.yHigh = e.maxMs;
+  p.id = e.name.full;
+  series.add(group, {colourIndex, true, false}, p);
+}
+
+// One line per group (backend or mode) of frame time against the curve's x.
+std::string curvePlot(const BenchModel& m, const std::string& title, const std::string& scene, const Entries& entries,
+                      bool byBackend) {
+  svg::Plot plot;
+  plot.title = title;
+  plot.x = {xAxisLabel(scene), scene == "curve-lights" ? svg::Scale::Log2 : svg::Scale::Log10, false};
+  double lo = INFINITY, hi = 0;
+  for (const BenchEntry* e : entries) lo = std::min(lo, *e->medianMs), hi = std::max(hi, *e->medianMs);
+  plot.y = {"median frame time, ms", lo > 0 && hi / lo > 20 ? svg::Scale::Log10 : svg::Scale::Linear, true};
+  svg::SeriesBuilder series(plot);
+  for (const BenchEntry* e : entries) {
+    const std::string group = byBackend ? backendOf(*e) : e->name.mode;
+    addCurvePoint(series, group, byBackend ? m.backendIndex(group) : m.modeIndex(group), *e);
+  }
+  svg::sortPointsByX(plot);
+  return svg::render(plot);
+}
+
+std::string fitText(const ComplexityFit& fit) {
+  std::string text = fit.family.mode + ": ";
+  if (fit.coefficientMs) text += fmt(*fit.coefficientMs, 3) + " ms \u00b7 ";
+  text += fit.bigO.empty() ? "?" : fit.bigO == "(1)" ? "1" : fit.bigO;
+  if (fit.rms) text += ", RMS " + fmt(*fit.rms * 100, 3) + " %";
+  return text;
+}
+
+// The dashed line of `fit` over the x range of the measured `s`; none when
+// fewer than two of its points can be drawn.
+std::optional<svg::Series> fitLine(const ComplexityFit& fit, const svg::Series& s) {
+  svg::Series line;
+  line.name = s.name + " fit " + (fit.bigO.empty() ? "?" : fit.bigO);
+  line.colour = s.colour;
+  line.dashed = true;
+  line.markers = false;
+  line.cssClass = "fit";
+  const double x0 = s.points.front().x, x1 = s.points.back().x;
+  for (int k = 0; k <= 40 && x1 > x0; ++k) {
+    const double x = x0 * std::pow(x1 / x0, k / 40.0);
+    if (const auto y = fit.at(x); y && *y > 0) line.points.push_back(svg::pointAt(x, *y));
+  }
+  if (line.points.size() < 2) return std::nullopt;
+  return line;
+}
+
+// One prepare curve scene: its modes' lines, their fits, and the fits' list.
+void prepareCurve(std::ostream& out, const BenchModel& m, const std::string& scene, const Entries& curves) {
+  svg::Plot plot;
+  plot.title = "prepare, " + scene;
+  plot.x = {xAxisLabel(scene), svg::Scale::Log10, false};
+  plot.y = {"median time, ms", svg::Scale::Log10, false};
+  svg::SeriesBuilder series(plot);
+  for (const BenchEntry* e : curves) addCurvePoint(series, e->name.mode, m.modeIndex(e->name.mode), *e);
+  svg::sortPointsByX(plot);
+  std::vector<const ComplexityFit*> fits;
+  const std::size_t measured = plot.series.size();
+  for (std::size_t i = 0; i < measured; ++i) {
+    for (const ComplexityFit& fit : m.set.fits) {
+      if (fit.family.kind != "prepare" || fit.family.scene != scene || fit.family.mode != plot.series[i].name) continue;
+      fits.push_back(&fit);
+      if (auto line = fitLine(fit, plot.series[i])) plot.series.push_back(std::move(*line));
+    }
+  }
+  out << "<div class=\"plotbox\">" << svg::render(plot) << "<div class=\"fits\"><strong>complexity fit</strong>";
+  if (fits.empty()) out << "<p>none reported</p>";
+  else {
+    out << "<ul>";
+    for (const ComplexityFit* f : fits) out << "<li>" << escapeText(fitText(*f)) << "</li>";
+    out << "</ul>";
+  }
+  out << "</div></div>\n";
+}
+
+}  // namespace
+
+void costCurveSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend) {
+  const Entries curves = filter(candidates, [](const BenchEntry& e) { return e.name.kind == "frame" && isCurve(e); });
+  out << "<h2 id=\"curves\">Cost curves</h2>\n<p class=\"note\">Median frame time (<code>frame</code>: draw, no "
+         "readback) against the load; the whiskers span the minimum and maximum over the repetitions.</p>\n";
+  if (curves.empty()) {
+    out << "<p>No cost-curve benchmarks.</p>\n";
+    return;
+  }
+  for (const std::string& scene : scenesOf(curves)) {
+    const Entries ofThisScene = ofScene(curves, scene);
+    if (!byBackend) {
+      out << curvePlot(m, scene, scene, ofThisScene, false);
+      continue;
+    }
+    std::vector<std::string> modes;  // one plot per mode, one line per backend
+    for (const BenchEntry* e : ofThisScene)
+      if (std::find(modes.begin(), modes.end(), e->name.mode) == modes.end()) modes.push_back(e->name.mode);
+    for (const std::string& mode : modes) {
+      const Entries ofMode = filter(ofThisScene, [&](const BenchEntry& e) { return e.name.mode == mode; });
+      out << curvePlot(m, scene + ", " + mode, scene, ofMode, true);
+    }
+  }
+}
+
+void prepareSection(std::ostream& out, const BenchModel& m) {
+  const Entries prepare = m.select(isPrepare);
+  out << "<h2 id=\"prepare\">CPU preparation</h2>\n<p class=\"note\">Selection (SPEC 5) and packing on the CPU, "
+         "log-log. Dashed: Google Benchmark's complexity fit (coefficient \u00b7 f(N), and its normalised RMS "
+         "error).</p>\n";
+  if (prepare.empty()) {
+    out << "<p>No CPU preparation benchmarks.</p>\n";
+    return;
+  }
+  const Entries curves = filter(prepare, isCurve);
+  for (const std::string& scene : scenesOf(curves)) prepareCurve(out, m, scene, ofScene(curves, scene));
+  // Fits of families that are not plotted.
+  for (const ComplexityFit& fit : m.set.fits)
+    if (fit.family.kind != "prepare")
+      out << "<p class=\"fits\">" << escapeText(fit.family.full) << ": " << escapeText(fitText(fit)) << "</p>\n";
+  out << "<h3>prepare (" << prepare.size() << ")</h3>\n";
+  benchTable(out, prepare);
+}
+
+}  // namespace reports::benchpages

@@ -1,0 +1,62 @@
+// What the benchmark pages (bench_report.h) are written from: bench.json read
+// once (BenchModel), and the questions every section asks of an entry (a
+// counter, its backend, its kind, its lightmap resolution), with the number
+// format of every table. Internal to reports/.
+#pragma once
+
+#include "reports/bench_data.h"
+#include "reports/result_fields.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace reports::benchpages {
+
+using Entries = std::vector<const BenchEntry*>;
+using Keep = std::function<bool(const BenchEntry&)>;
+
+struct BenchModel {
+  const Json& bench;
+  BenchSet set;
+  std::vector<std::string> backends;  // page order and colours
+  std::vector<std::string> modes;     // colour order on backend pages
+
+  explicit BenchModel(const Json& b);
+  std::size_t backendIndex(const std::string& name) const;
+  std::size_t modeIndex(const std::string& name) const;
+  Entries select(const Keep& keep) const;  // of every entry, in file order
+};
+
+// The entries of `entries` that `keep` keeps, in order.
+Entries filter(const Entries& entries, const Keep& keep);
+Entries ofScene(const Entries& entries, const std::string& scene);
+
+// A table's number: integers in full (921600, not 9.216e+05), else `digits`
+// significant digits; "-" for none or non-finite.
+std::string fmt(double v, int digits = 4);
+std::string fmt(const std::optional<double>& v, int digits = 4);
+
+std::optional<double> counter(const BenchEntry& e, const std::string& key);
+// The median over limit_ms (docs/performance.md, the physical limit).
+std::optional<double> limitRatio(const BenchEntry& e);
+// The bench.json section it came from, else the backend its name says.
+std::string backendOf(const BenchEntry& e);
+
+bool isPrepare(const BenchEntry& e);
+// A `frame` benchmark with a time and err_rmse: a point of the speed-against-error plot.
+bool hasError(const BenchEntry& e);
+// N of a `lightmap-N` mode (docs/bench-format.md); nullopt for other modes.
+std::optional<double> lightmapResolution(const BenchEntry& e);
+// A point of a cost curve: scene curve-*, a numeric x and a time.
+bool isCurve(const BenchEntry& e);
+
+// Scenes in first-appearance order, the synthetic lights64-1280x720 first,
+// then the lightmap scenes and the curves.
+std::vector<std::string> scenesOf(const Entries& entries);
+// The x axis of a curve scene ("lights" for curve-lights).
+std::string xAxisLabel(const std::string& scene);
+
+}  // namespace reports::benchpages

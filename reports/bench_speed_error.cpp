@@ -1,0 +1,138 @@
+// Speed against error: one point per (backend, mode) of the `frame`
+// benchmarks, median frame time against err_rmse, the Pareto front ringed
+// and joined by steps, and the table of the points in time order.
+#include "reports/bench_report.h"
+#include "reports/bench_sections.h"
+#include "reports/bench_table.h"
+#include "reports/html_escape.h"
+#include "reports/svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <utility>
+
+namespace reports {
+
+std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points) {
+  std::vector<bool> front(points.size(), true);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t j = 0; j < points.size() && front[i]; ++j) {
+      const auto& [ti, ei] = points[i];
+      const auto& [tj, ej] = points[j];
+      if (j != i && tj <= ti && ej <= ei && (tj < ti || ej < ei)) front[i] = false;
+    }
+  return front;
+}
+
+namespace benchpages {
+namespace {
+
+using TimeError = std::pair<double, double>;
+
+// Log10 errors when they span more than a decade and are all positive.
+svg::Scale errorScale(const std::vector<TimeError>& te) {
+  double lo = INFINITY, hi = 0;
+  for (const auto& [t, err] : te)
+    if (err > 0) lo = std::min(lo, err), hi = std::max(hi, err);
+  const bool positive = std::all_of(te.begin(), te.end(), [](const TimeError& p) { return p.second > 0; });
+  return lo > 0 && hi / lo > 10 && positive ? svg::Scale::Log10 : svg::Scale::Linear;
+}
+
+// The front as one stepped line in time order, drawn under the points.
+svg::Series frontLine(const std::vector<TimeError>& te, const std::vector<bool>& front) {
+  svg::Series line;
+  line.name = "Pareto front";
+  line.colour = "#000";
+  line.markers = false;
+  line.steps = true;
+  line.cssClass = "front";
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < te.size(); ++i)
+    if (front[i]) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return te[a] < te[b]; });
+  for (std::size_t i : order) line.points.push_back(svg::pointAt(te[i].first, te[i].second));
+  return line;
+}
+
+// The columns of the Pareto table; `onFront` says which rows are on it.
+Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& onFront, bool withBake) {
+  Table<const BenchEntry*> table;
+  table.cssClass = "bench pareto";
+  const auto front = [&onFront](const BenchEntry& e) { return onFront.at(&e); };
+  table.rowClass = [front](const BenchEntry* e) { return std::string(front(*e) ? "front" : ""); };
+  table.columns = {
+      textColumn("backend", backendOf),
+      textColumn("mode", [](const BenchEntry& e) { return e.name.mode; }),
+      textColumn("Pareto front", [front](const BenchEntry& e) { return std::string(front(e) ? "yes" : ""); }),
+      numberColumn("median ms", [](const BenchEntry& e) { return e.medianMs; }),
+      numberColumn("min ms", [](const BenchEntry& e) { return e.minMs; }),
+      numberColumn("max ms", [](const BenchEntry& e) { return e.maxMs; }),
+      numberColumn("n", [](const BenchEntry& e) { return std::optional<double>(e.count); }),
+      counterColumn("err_rmse", "err_rmse"),
+      counterColumn("err_max_abs", "err_max_abs"),
+      counterColumn("err_psnr_db", "err_psnr_db"),
+  };
+  // The lightmap modes carry their bake time: the price paid before the frame.
+  if (withBake) table.columns.push_back(counterColumn("bake ms", "bake_ms"));
+  table.columns.push_back(numberColumn("\u00d7 limit", limitRatio, 3));
+  return table;
+}
+
+// The scatter of one scene and its table; colours by backend (overview) or
+// by mode (a backend page).
+void scatterSection(std::ostream& out, const BenchModel& m, const std::string& scene, const Entries& points,
+                    bool byBackend) {
+  std::vector<TimeError> te;
+  for (const BenchEntry* e : points) te.emplace_back(*e->medianMs, *counter(*e, "err_rmse"));
+  const std::vector<bool> front = paretoFront(te);
+
+  svg::Plot plot;
+  plot.title = scene + ": speed against error (frame)";
+  plot.x = {"median frame time, ms", svg::Scale::Log10, false};
+  plot.y = {"err_rmse against --ideal", errorScale(te), true};
+  svg::SeriesBuilder series(plot);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const BenchEntry& e = *points[i];
+    const std::string group = byBackend ? backendOf(e) : e.name.mode;
+    svg::Point p = svg::pointAt(te[i].first, te[i].second);
+    p.id = backendOf(e) + "/" + e.name.mode;
+    p.label = e.name.mode;
+    p.highlight = front[i];
+    series.add(group, {byBackend ? m.backendIndex(group) : m.modeIndex(group), false, false}, p);
+  }
+  plot.series.insert(plot.series.begin(), frontLine(te, front));
+  out << "<h3>" << escapeText(scene) << "</h3>\n" << svg::render(plot);
+
+  std::map<const BenchEntry*, bool> onFront;
+  for (std::size_t i = 0; i < points.size(); ++i) onFront[points[i]] = front[i];
+  const bool withBake = std::any_of(points.begin(), points.end(), [](const BenchEntry* e) {
+    return counter(*e, "bake_ms").has_value();
+  });
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return te[a] < te[b]; });
+  Entries rows;
+  for (std::size_t i : order) rows.push_back(points[i]);
+  writeTable(out, paretoTable(onFront, withBake), rows);
+}
+
+}  // namespace
+
+void speedErrorSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend) {
+  out << "<h2 id=\"pareto\">Speed against error</h2>\n<p class=\"note\">One point per (backend, mode) of the "
+         "<code>frame</code> benchmarks: median frame time against the RMS error of the image against the "
+         "<code>--ideal</code> reference. Ringed points, joined by the black steps, are the Pareto front: no other "
+         "point is both faster and more accurate.</p>\n";
+  const Entries withError = filter(candidates, hasError);
+  if (withError.empty()) {
+    out << "<p>No frame benchmark has error counters.</p>\n";
+    return;
+  }
+  for (const std::string& scene : scenesOf(withError))
+    scatterSection(out, m, scene, ofScene(withError, scene), byBackend);
+}
+
+}  // namespace benchpages
+}  // namespace reports

@@ -1,0 +1,107 @@
+#include "reports/bench_table.h"
+
+#include "reports/html_escape.h"
+#include "reports/html_sections.h"
+
+#include <algorithm>
+#include <set>
+#include <utility>
+
+namespace reports::benchpages {
+
+std::string valueCell(const std::optional<double>& value, int digits) { return html::numberCell(fmt(value, digits)); }
+
+EntryColumn textColumn(std::string header, std::function<std::string(const BenchEntry&)> text) {
+  return {std::move(header), [text = std::move(text)](const BenchEntry* e) { return html::cell(text(*e)); }};
+}
+
+EntryColumn numberColumn(std::string header, EntryValue value, int digits) {
+  return {std::move(header), [value = std::move(value), digits](const BenchEntry* e) {
+            return valueCell(value(*e), digits);
+          }};
+}
+
+EntryColumn counterColumn(std::string header, const std::string& key) {
+  return numberColumn(std::move(header), [key](const BenchEntry& e) { return counter(e, key); });
+}
+
+std::optional<std::string> failureOf(const BenchEntry& e) {
+  if (!e.error.empty() && !e.medianMs) return e.error;
+  return std::nullopt;
+}
+
+std::string tableHead(std::string_view cssClass, const std::vector<std::string>& headers) {
+  std::string head = "<table class=\"" + escapeText(cssClass) + "\">\n<tr>";
+  for (const std::string& h : headers) head += "<th>" + escapeText(h) + "</th>";
+  return head + "</tr>\n";
+}
+
+std::string failureCells(std::size_t span, const std::string& message) {
+  return "<td class=\"err\" colspan=\"" + std::to_string(span) + "\">error: " + escapeText(message) + "</td>";
+}
+
+namespace {
+
+// A column of numbers of an entry; shown only when some row has a value.
+struct NumberColumn {
+  std::string header;
+  std::function<std::optional<double>(const BenchEntry&)> value;
+  int digits = 4;
+};
+
+std::vector<NumberColumn> numberColumns(const Entries& entries) {
+  std::vector<NumberColumn> columns = {
+      {"median ms", [](const BenchEntry& e) { return e.medianMs; }},
+      {"min ms", [](const BenchEntry& e) { return e.minMs; }},
+      {"max ms", [](const BenchEntry& e) { return e.maxMs; }},
+      {"stddev ms", [](const BenchEntry& e) { return e.stddevMs; }, 3},
+      {"n", [](const BenchEntry& e) { return e.count ? std::optional<double>(e.count) : std::nullopt; }},
+  };
+  const std::vector<std::pair<std::string, std::string>> known = {
+      {"wall_ms", "wall ms"}, {"device_ms", "device ms"}, {"pixels", "pixels"}, {"lights", "lights"},
+      {"lights_per_pixel", "lights/pixel"}, {"pixels_per_s", "pixels/s"},
+      {"pixel_light_evals_per_s", "pixel-light evals/s"}, {"err_rmse", "err_rmse"},
+      {"err_max_abs", "err_max_abs"}, {"err_psnr_db", "err_psnr_db"},
+      {"err_perceptual_fail", "err_perceptual_fail"}, {"bake_ms", "bake ms"}, {"bake_runs", "bake runs"},
+      {"lightmap_texels", "lightmap texels"}, {"flops_per_pixel_light", "flops/pixel-light"},
+      {"limit_ms", "limit ms"}};
+  for (const auto& [key, header] : known)
+    columns.push_back({header, [key = key](const BenchEntry& e) { return counter(e, key); }});
+  columns.push_back({"\u00d7 limit", limitRatio, 3});
+  std::set<std::string> seen;
+  for (const auto& [key, header] : known) seen.insert(key);
+  for (const BenchEntry* e : entries)
+    for (const auto& [key, value] : e->counters)
+      if (seen.insert(key).second)
+        columns.push_back({key, [key = key](const BenchEntry& x) { return counter(x, key); }});
+  std::vector<NumberColumn> used;
+  for (NumberColumn& c : columns)
+    if (std::any_of(entries.begin(), entries.end(), [&](const BenchEntry* e) { return c.value(*e).has_value(); }))
+      used.push_back(std::move(c));
+  return used;
+}
+
+}  // namespace
+
+void benchTable(std::ostream& out, const Entries& entries) {
+  if (entries.empty()) return;
+  Table<const BenchEntry*> table;
+  table.cssClass = "bench";
+  table.columns.push_back(textColumn("benchmark", [](const BenchEntry& e) { return e.name.full; }));
+  for (NumberColumn& c : numberColumns(entries)) table.columns.push_back(numberColumn(c.header, c.value, c.digits));
+  table.failure = [](const BenchEntry* e) { return failureOf(*e); };
+  writeTable(out, table, entries);
+}
+
+void tablesByKind(std::ostream& out, const Entries& entries) {
+  std::vector<std::string> kinds;
+  for (const BenchEntry* e : entries)
+    if (std::find(kinds.begin(), kinds.end(), e->name.kind) == kinds.end()) kinds.push_back(e->name.kind);
+  for (const std::string& kind : kinds) {
+    const Entries ofKind = filter(entries, [&](const BenchEntry& e) { return e.name.kind == kind; });
+    out << "<h3>" << escapeText(kind) << " (" << ofKind.size() << ")</h3>\n";
+    benchTable(out, ofKind);
+  }
+}
+
+}  // namespace reports::benchpages

@@ -1,0 +1,82 @@
+#include "suite/bench/bench_registrar.h"
+
+#include "suite/bench/frame_timer.h"
+
+#include <algorithm>
+#include <exception>
+#include <vector>
+
+namespace bench {
+namespace {
+
+double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
+double maximum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }
+
+// Repetitions with aggregates (mean, median, stddev, cv, min, max) in the
+// JSON beside every repetition (the compare tool's U-test needs those); the
+// console shows the aggregates only.
+void configure(benchmark::internal::Benchmark* b, const Timing& timing) {
+  b->Unit(benchmark::kMillisecond)->UseManualTime()->Repetitions(timing.repetitions)->DisplayAggregatesOnly(true);
+  b->ComputeStatistics("min", minimum)->ComputeStatistics("max", maximum);
+  if (timing.iterations > 0) b->Iterations(timing.iterations);
+  else b->MinTime(timing.minTime);
+}
+
+}  // namespace
+
+// A slow driver (softpipe, seconds a frame): one iteration, 3 repetitions
+// (1 with --quick).
+Registrar::Registrar(std::shared_ptr<RunState> run) : run_(std::move(run)) {
+  const bool quick = run_->settings.quick;
+  if (run_->slow()) {
+    frameTiming_ = {quick ? 1 : 3, 0, 1};
+    pipelineTiming_ = {quick ? 1 : 3, 0.05, 0};
+  } else {
+    frameTiming_ = {quick ? 2 : 5, quick ? 0.01 : 0.05, 0};
+    pipelineTiming_ = frameTiming_;
+  }
+}
+
+std::string Registrar::name(const char* kind, const std::string& scene, const std::string& mode,
+                            const std::string& x) const {
+  std::string text(kind);
+  text.append("/").append(run_->suffix()).append("/").append(scene).append("/").append(mode);
+  if (!x.empty()) text.append("/").append(x);
+  return text;
+}
+
+void Registrar::frame(const std::string& scene, const std::string& mode, const std::string& x,
+                      const std::shared_ptr<const BenchFrame>& bench, bool withReadback) {
+  auto run = run_;
+  configure(benchmark::RegisterBenchmark(name(withReadback ? "frame_readback" : "frame", scene, mode, x).c_str(),
+                                         [run, bench, withReadback](benchmark::State& st) {
+                                           timeFrame(st, *run, *bench, withReadback);
+                                         }),
+            frameTiming_);
+}
+
+void Registrar::lazyFrame(const std::string& scene, const std::string& mode, MakeBench make) {
+  auto run = run_;
+  auto made = std::make_shared<std::shared_ptr<const BenchFrame>>();
+  configure(benchmark::RegisterBenchmark(name("frame", scene, mode, "").c_str(),
+                                         [run, made, make = std::move(make)](benchmark::State& st) {
+                                           try {
+                                             if (!*made) *made = make();
+                                           } catch (const std::exception& e) {
+                                             st.SkipWithError(e.what());
+                                             return;
+                                           }
+                                           timeFrame(st, *run, **made, false);
+                                         }),
+            frameTiming_);
+}
+
+void Registrar::pipeline(const std::string& scene, const std::string& mode,
+                         const std::shared_ptr<const BenchFrame>& bench) {
+  auto run = run_;
+  configure(benchmark::RegisterBenchmark(name("pipeline", scene, mode, "").c_str(),
+                                         [run, bench](benchmark::State& st) { timePipeline(st, *run, *bench); }),
+            pipelineTiming_);
+}
+
+}  // namespace bench

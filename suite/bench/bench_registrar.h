@@ -1,0 +1,49 @@
+// Registers the frame benchmarks with Google Benchmark under the names of
+// docs/bench-format.md (`<kind>/<combination>/<scene>/<mode>[/<x>]`), with
+// the run's repetitions and statistics: what every benchmark family calls,
+// so that names and timing are decided here only.
+#pragma once
+
+#include "suite/bench/bench_frame.h"
+#include "suite/bench/run_state.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace bench {
+
+// How a benchmark repeats: a fixed iteration count, or Google Benchmark's
+// own choice for at least minTime seconds (of the benchmark's time) per repetition.
+struct Timing {
+  int repetitions = 5;
+  double minTime = 0.05;
+  int iterations = 0;  // 0: chosen by Google Benchmark
+};
+
+class Registrar {
+ public:
+  explicit Registrar(std::shared_ptr<RunState> run);
+
+  // frame/... or, withReadback, frame_readback/...; `x` empty: no /<x>.
+  void frame(const std::string& scene, const std::string& mode, const std::string& x,
+             const std::shared_ptr<const BenchFrame>& bench, bool withReadback);
+
+  // A frame benchmark whose frame is made on its first run, not here: the
+  // lightmap modes bake (several times) and trace their load only when the
+  // filter selects them, so the smoke tests do not pay for every resolution.
+  using MakeBench = std::function<std::shared_ptr<const BenchFrame>()>;
+  void lazyFrame(const std::string& scene, const std::string& mode, MakeBench make);
+
+  void pipeline(const std::string& scene, const std::string& mode, const std::shared_ptr<const BenchFrame>& bench);
+
+  const RunState& run() const { return *run_; }
+
+ private:
+  std::string name(const char* kind, const std::string& scene, const std::string& mode, const std::string& x) const;
+
+  std::shared_ptr<RunState> run_;
+  Timing frameTiming_, pipelineTiming_;
+};
+
+}  // namespace bench

@@ -1,0 +1,103 @@
+#include "suite/bench/bench_settings.h"
+
+#include "backends/backend.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+
+namespace bench {
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+bool startsWith(std::string_view a, std::string_view prefix, std::string_view& value) {
+  if (!a.starts_with(prefix)) return false;
+  value = a.substr(prefix.size());
+  return true;
+}
+
+// "a, b or c", for the messages that say what a flag accepts.
+std::string oneOf(const std::vector<std::string>& names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return text;
+}
+
+// The drivers the combination table names (llvmpipe, softpipe), in table order.
+std::vector<std::string> tableDrivers() {
+  std::vector<std::string> drivers;
+  for (const backends::BackendCombination& c : backends::backendCombinations())
+    if (!c.driver.empty() && std::find(drivers.begin(), drivers.end(), c.driver) == drivers.end())
+      drivers.push_back(c.driver);
+  return drivers;
+}
+
+const backends::BackendCombination* combinationOf(const std::string& backend, const std::string& driver) {
+  if (const auto* c = backends::findCombination(backend, driver)) return c;
+  // A backend the table gives no driver choice (Vulkan) has always ignored a
+  // --driver of normal speed; only a slow one, which would pick the
+  // scaled-down set, is refused.
+  const backends::BackendCombination* fixed = backends::findCombination(backend, "");
+  const auto& all = backends::backendCombinations();
+  const auto named = std::find_if(all.begin(), all.end(), [&](const auto& c) { return c.driver == driver; });
+  if (fixed && fixed->driver.empty() && named != all.end() && !named->isSlowDriver()) return fixed;
+  return nullptr;
+}
+
+// 0, or kExitBadInput with the reason on stderr.
+int checkCombination(Settings& settings) {
+  const std::vector<std::string>& backendNames = backends::specBackendNames();
+  if (std::find(backendNames.begin(), backendNames.end(), settings.backend) == backendNames.end()) {
+    std::fprintf(stderr, "render_bench: --backend must be %s, not '%s'\n", oneOf(backendNames).c_str(),
+                 settings.backend.c_str());
+    return kExitBadInput;
+  }
+  const std::vector<std::string> drivers = tableDrivers();
+  if (!settings.driver.empty() && std::find(drivers.begin(), drivers.end(), settings.driver) == drivers.end()) {
+    std::fprintf(stderr, "render_bench: --driver must be %s, not '%s'\n", oneOf(drivers).c_str(),
+                 settings.driver.c_str());
+    return kExitBadInput;
+  }
+  settings.combination = combinationOf(settings.backend, settings.driver);
+  if (!settings.combination) {
+    std::fprintf(stderr, "render_bench: --driver=%s is not a driver of %s (the combinations: %s)\n",
+                 settings.driver.c_str(), settings.backend.c_str(), backends::combinationSuffixList().c_str());
+    return kExitBadInput;
+  }
+  return 0;
+}
+
+}  // namespace
+
+ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defaultScenes) {
+  ParsedFlags parsed;
+  Settings& settings = parsed.settings;
+  settings.scenes = defaultScenes;
+  for (int i = 0; i < argc; ++i) {
+    const std::string_view a(argv[i]);
+    std::string_view value;
+    if (i > 0 && startsWith(a, "--backend=", value)) settings.backend = std::string(value);
+    else if (i > 0 && startsWith(a, "--driver=", value)) settings.driver = std::string(value);
+    else if (i > 0 && startsWith(a, "--scenes=", value)) settings.scenes = std::filesystem::path(value);
+    else if (i > 0 && startsWith(a, "--peak_gflops=", value)) {
+      char* end = nullptr;
+      const std::string text(value);
+      const double gflops = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(gflops > 0)) {
+        std::fprintf(stderr, "render_bench: --peak_gflops needs a positive number, not '%s'\n", text.c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
+      settings.peakGflops = gflops;
+    } else if (i > 0 && a == "--quick") settings.quick = true;
+    else if (i > 0 && a == "--suite_scenes") settings.suiteScenes = true;
+    else parsed.rest.push_back(argv[i]);
+  }
+  parsed.usageError = checkCombination(settings);
+  return parsed;
+}
+
+}  // namespace bench

@@ -1,0 +1,36 @@
+// The frame benchmarks' own flags (frame_benchmarks.h lists them): read from
+// the command line and checked against SPEC 8's backend names and the one
+// table of backend combinations (backends/backend_combinations.h), before
+// anything else runs. Every other argument is Google Benchmark's.
+#pragma once
+
+#include "backends/backend_combinations.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace bench {
+
+struct Settings {
+  std::string backend = "vulkan";
+  std::string driver;  // as given; empty: the backend's default (llvmpipe for GL)
+  std::optional<double> peakGflops;
+  bool quick = false;
+  bool suiteScenes = false;
+  std::filesystem::path scenes;  // --scenes; the caller's default when not given
+  // The combination backend and driver select: its suffix names every
+  // benchmark, and a slow driver (softpipe) runs the scaled-down set.
+  const backends::BackendCombination* combination = nullptr;
+};
+
+struct ParsedFlags {
+  Settings settings;
+  std::vector<char*> rest;  // argv[0] and what Google Benchmark reads, in order
+  int usageError = 0;       // 0, or the exit status of a bad flag (the message is on stderr)
+};
+
+ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defaultScenes);
+
+}  // namespace bench

@@ -1,0 +1,78 @@
+// The cost curves: frame time against the light count (forward against
+// deferred), the resolution and the object count. Speed only: no error
+// counters (an ideal reference per point would cost more than the whole curve).
+#include "baking/bake.h"
+#include "suite/bench/bench_families.h"
+#include "suite/bench/bench_scenes.h"
+
+#include <utility>
+#include <vector>
+
+namespace bench {
+namespace {
+
+// A curve point of the synthetic field.
+std::shared_ptr<const BenchFrame> curveFrame(const FieldSpec& field, const std::string& name) {
+  BenchFrameSpec spec;
+  spec.prepared = baking::prepareBakedScene(fieldScene(field, name));
+  spec.everyLightInView = true;
+  return makeBenchFrame(std::move(spec));
+}
+
+std::string sizeName(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+}  // namespace
+
+void registerCurves(Registrar& r) {
+  const RunState& run = r.run();
+  const bool quick = run.settings.quick;
+  // The light and object curves at 640x360 (a quarter of the field's
+  // pixels, to fit the time budget), at 256x144 on a slow driver.
+  const int curveWidth = run.slow() ? 256 : 640, curveHeight = run.slow() ? 144 : 360;
+
+  const std::vector<int> lightCounts =
+      quick ? std::vector<int>{1, 64, 256} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128, 256};
+  // Deferred against forward along the light count: where the volumes
+  // (a few per pixel) overtake every kept light per pixel.
+  std::vector<FrameMode> lightModes = {FrameMode::AllLights};
+  if (!quick) lightModes.push_back(FrameMode::PerObject);
+  lightModes.push_back(FrameMode::DeferredHdr32);
+  if (!quick) lightModes.insert(lightModes.end(), {FrameMode::DeferredHdr16, FrameMode::DeferredLdr8});
+  for (const FrameMode mode : lightModes) {
+    for (const int n : lightCounts) {
+      FieldSpec spec;
+      spec.width = curveWidth;
+      spec.height = curveHeight;
+      spec.mode = mode;
+      lightGridFor(n, spec.lightColumns, spec.lightRows);
+      const std::string x = std::to_string(n);
+      r.frame("curve-lights", modeName(mode), x,
+              curveFrame(spec, std::string("curve-lights-").append(x + "-" + modeName(mode))), false);
+    }
+  }
+
+  std::vector<std::pair<int, int>> sizes;
+  if (run.slow()) sizes = {{128, 72}, {256, 144}, {512, 288}};
+  else sizes = {{256, 256}, {640, 360}, {1280, 720}, {1920, 1080}};
+  if (quick) sizes.resize(2);
+  for (const auto& [w, h] : sizes) {
+    FieldSpec spec;
+    spec.width = w;
+    spec.height = h;
+    const std::string x = sizeName(w, h);
+    r.frame("curve-resolution", modeName(FrameMode::AllLights), x, curveFrame(spec, "curve-resolution-" + x), false);
+  }
+
+  const std::vector<int> sides = quick ? std::vector<int>{1, 8} : std::vector<int>{1, 2, 4, 8, 16};
+  for (const int side : sides) {
+    FieldSpec spec;
+    spec.width = curveWidth;
+    spec.height = curveHeight;
+    spec.tileColumns = spec.tileRows = side;
+    spec.boxes = false;
+    const std::string x = std::to_string(side * side);
+    r.frame("curve-objects", modeName(FrameMode::AllLights), x, curveFrame(spec, "curve-objects-" + x), false);
+  }
+}
+
+}  // namespace bench

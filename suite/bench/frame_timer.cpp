@@ -1,0 +1,105 @@
+#include "suite/bench/frame_timer.h"
+
+#include "suite/bench/wall_clock.h"
+
+#include <exception>
+#include <optional>
+#include <utility>
+
+namespace bench {
+namespace {
+
+void setLoadCounters(benchmark::State& state, const RunState& run, const FrameLoad& load) {
+  auto& c = state.counters;
+  const double iterations = double(state.iterations());
+  c["pixels"] = load.pixels;
+  c["lights"] = double(load.keptLights);
+  c["lights_per_pixel"] = load.lightsPerPixel;
+  c["pixels_per_s"] = benchmark::Counter(load.pixels * iterations, benchmark::Counter::kIsRate);
+  c["pixel_light_evals_per_s"] =
+      benchmark::Counter(load.pixels * load.lightsPerPixel * iterations, benchmark::Counter::kIsRate);
+  if (run.settings.peakGflops && run.flopsPerPixelLight > 0) {
+    c["flops_per_pixel_light"] = run.flopsPerPixelLight;
+    c["limit_ms"] = load.pixels * load.lightsPerPixel * run.flopsPerPixelLight / (*run.settings.peakGflops * 1e9) * 1e3;
+  }
+}
+
+void setErrorCounters(benchmark::State& state, const ImageError& e) {
+  auto& c = state.counters;
+  c["err_rmse"] = e.rmse;
+  c["err_max_abs"] = e.maxAbs;
+  c["err_psnr_db"] = e.psnrDb;
+  c["err_perceptual_fail"] = e.perceptualFail;
+}
+
+void setBakeCounters(benchmark::State& state, const BenchFrame& bench) {
+  const BakeTime& bake = *bench.spec.bake;
+  const double resolution = double(bench.frame.scene().objects.front().lightmapResolution);
+  auto& c = state.counters;
+  c["bake_ms"] = bake.medianMs;
+  c["bake_runs"] = double(bake.runs);
+  c["lightmap_texels"] = resolution * resolution;
+}
+
+}  // namespace
+
+void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, bool withReadback) {
+  try {
+    backends::Backend& backend = run.backendFor(bench);
+    const bool withError = !bench.spec.referenceKey.empty();
+    if (withError) run.idealFor(bench);  // rendered now, untimed, then cached
+    backend.preparePipeline(bench.frame);
+    // Repetitions call this again: the warm-up draw is needed only when
+    // another frame was drawn on this backend since.
+    if (!run.slow() && run.lastDrawn[&backend] != &bench) backend.draw(bench.frame);
+    run.lastDrawn[&backend] = &bench;
+    double wallMs = 0, deviceMs = 0;
+    bool deviceEveryTime = true;
+    imaging::Image image;  // frame_readback: the last one read back
+    for (auto _ : state) {
+      const auto start = Clock::now();
+      backend.draw(bench.frame);
+      const std::optional<double> device = backend.lastDrawDeviceMilliseconds();
+      if (withReadback) {
+        image = backend.readback();
+        benchmark::DoNotOptimize(image.pixels.data());
+      }
+      const double wall = millisecondsSince(start);
+      wallMs += wall;
+      if (device) deviceMs += *device;
+      else deviceEveryTime = false;
+      state.SetIterationTime((run.deviceTime && device && !withReadback ? *device : wall) / 1e3);
+    }
+    auto& c = state.counters;
+    c["wall_ms"] = benchmark::Counter(wallMs, benchmark::Counter::kAvgIterations);
+    if (deviceEveryTime && state.iterations() > 0)
+      c["device_ms"] = benchmark::Counter(deviceMs, benchmark::Counter::kAvgIterations);
+    setLoadCounters(state, run, bench.load);
+    // One readback per draw: frame_readback's last image when it has one.
+    const auto lastImage = [&] { return image.pixels.empty() ? backend.readback() : std::move(image); };
+    if (withError) setErrorCounters(state, run.errorFor(bench, lastImage));
+    if (bench.spec.bake) setBakeCounters(state, bench);
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+  }
+}
+
+void timePipeline(benchmark::State& state, RunState& run, const BenchFrame& bench) {
+  try {
+    backends::BackendOptions options = run.options;
+    options.variant.specialised = !bench.spec.fullShader;
+    for (auto _ : state) {
+      emptyPipelineCache(run);
+      const std::unique_ptr<backends::Backend> backend = run.entry->create(options);
+      const auto start = Clock::now();
+      backend->preparePipeline(bench.frame);
+      state.SetIterationTime(millisecondsSince(start) / 1e3);
+    }
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  state.counters["lights"] = double(bench.load.keptLights);
+}
+
+}  // namespace bench

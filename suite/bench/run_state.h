@@ -1,0 +1,56 @@
+// Everything one frame-benchmark process shares between its benchmarks: the
+// combination and its backends, the on-disk pipeline cache folder, and the
+// ideal references and image errors computed so far (each once per key).
+#pragma once
+
+#include "backends/backend.h"
+#include "imaging/image.h"
+#include "suite/bench/bench_frame.h"
+#include "suite/bench/bench_settings.h"
+#include "suite/bench/image_error.h"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace bench {
+
+struct RunState {
+  Settings settings;
+  const backends::BackendEntry* entry = nullptr;
+  backends::BackendOptions options;
+  std::filesystem::path cacheDir;
+  double flopsPerPixelLight = 0;  // 0: unknown, no limit counters
+  std::unique_ptr<backends::Backend> specialised;  // the shipped shaders
+  std::unique_ptr<backends::Backend> full;         // full-shader, made on first use
+  std::map<std::string, imaging::Image> ideal;
+  std::map<std::string, ImageError> errors;
+  std::map<const backends::Backend*, const BenchFrame*> lastDrawn;  // what each backend drew last
+  bool deviceTime = false;  // the benchmarks' time is the device's (calibrateTimeSource)
+
+  // The combination's suffix (vulkan, gl-egl, gl-osmesa-softpipe, ...): part of every name.
+  const std::string& suffix() const { return settings.combination->suffix; }
+  // A slow driver (softpipe): the scaled-down set.
+  bool slow() const { return settings.combination->isSlowDriver(); }
+
+  // The backend object shared by every draw benchmark of its shader variant.
+  backends::Backend& backendFor(const BenchFrame& bench);
+  // The `--ideal` reference of SPEC 6, rendered once per key in this process.
+  const imaging::Image& idealFor(const BenchFrame& bench);
+  // The error of `bench` against its ideal reference, computed from
+  // `readback()` the first time its key is asked for.
+  const ImageError& errorFor(const BenchFrame& bench, const std::function<imaging::Image()>& readback);
+};
+
+// The pipeline benchmarks must measure a real compile, not a hit in the
+// on-disk pipeline cache ($LIGHTCTS_CACHE_DIR, else ~/.cache/lightcts): this
+// points the cache at a fresh, empty folder of this process (run.cacheDir)
+// before any backend is created; runPipeline empties it again before every
+// iteration. The user's cache stays untouched.
+void useFreshPipelineCache(RunState& run);
+// Empties the folder (between pipeline iterations).
+void emptyPipelineCache(const RunState& run);
+
+}  // namespace bench

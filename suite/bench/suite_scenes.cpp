@@ -1,0 +1,40 @@
+// --suite_scenes: frame 0 of every suite scene of the catalogue
+// (conformance::findSceneFiles, SPEC 10), `frame` kind, named
+// frame/<combination>/<group>.<name>/<mode>, with its error against its own
+// ideal reference.
+#include "baking/bake.h"
+#include "conformance/scene_catalogue.h"
+#include "lighting/scene_loader.h"
+#include "suite/bench/bench_families.h"
+#include "suite/bench/bench_scenes.h"
+
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+namespace bench {
+
+void registerSuiteScenes(Registrar& r) {
+  const std::filesystem::path& root = r.run().settings.scenes;
+  std::vector<conformance::SceneFile> files;
+  try {
+    files = conformance::findSceneFiles(root);
+  } catch (const std::exception& e) {  // not a folder, or no scene in it: nothing to register
+    std::fprintf(stderr, "render_bench: no suite scenes in %s (%s)\n", root.c_str(), e.what());
+  }
+  for (const conformance::SceneFile& file : files) {
+    const std::string sceneId = file.caseName();
+    try {
+      BenchFrameSpec spec;
+      lighting::Scene scene = lighting::loadSceneFile(file.path.string());
+      const std::string mode = modeName(frameModeOf(scene.pipeline));
+      spec.prepared = baking::prepareBakedScene(std::move(scene));  // suite scenes may have lightmaps
+      spec.referenceKey = spec.errorKey = sceneId;
+      r.frame(sceneId, mode, "", makeBenchFrame(std::move(spec)), false);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "render_bench: %s not registered: %s\n", sceneId.c_str(), e.what());
+    }
+  }
+}
+
+}  // namespace bench

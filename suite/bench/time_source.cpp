@@ -1,0 +1,44 @@
+#include "suite/bench/time_source.h"
+
+#include "baking/bake.h"
+#include "suite/bench/bench_scenes.h"
+#include "suite/bench/wall_clock.h"
+
+#include <cstdio>
+#include <optional>
+
+namespace bench {
+
+std::string calibrateTimeSource(RunState& run) {
+  FieldSpec field;
+  field.width = run.slow() ? 128 : 640;
+  field.height = run.slow() ? 72 : 360;
+  BenchFrameSpec spec;
+  spec.prepared = baking::prepareBakedScene(fieldScene(field, "time-calibration"));
+  const auto bench = makeBenchFrame(std::move(spec));
+  backends::Backend& backend = *run.specialised;
+  std::optional<double> device;
+  double wall = 0;
+  for (int i = 0; i < 3; ++i) {
+    const auto start = Clock::now();
+    backend.draw(bench->frame);
+    device = backend.lastDrawDeviceMilliseconds();
+    wall = millisecondsSince(start);
+  }
+  run.deviceTime = device && *device >= 0.5 * wall;
+  char text[320];
+  if (!device)
+    std::snprintf(text, sizeof text, "wall: the device reports no time of its own");
+  else if (run.deviceTime)
+    std::snprintf(text, sizeof text,
+                  "device (frame kind): %.3g ms of device time for %.3g ms wall on a %dx%d calibration frame", *device,
+                  wall, field.width, field.height);
+  else
+    std::snprintf(text, sizeof text,
+                  "wall: the device's time misses most of the work (%.3g ms for %.3g ms wall on a %dx%d calibration "
+                  "frame); device_ms is reported beside",
+                  *device, wall, field.width, field.height);
+  return text;
+}
+
+}  // namespace bench

@@ -1,0 +1,23 @@
+# The scenes that get a generated deferred variant in this folder, and what
+# every variant changes (README.md). suite/deferred_variants.cmake writes the
+# variants at configure time and checks them; the test
+# unit.scenes.deferred-variants-match-originals checks them again.
+
+# Paths under suite/scenes. A pattern takes every scene of its folder, so an
+# attenuation scene added later gets its variant too.
+set(deferred_variant_originals
+  "attenuation/*.json"
+  "shadowmask/strength-0-half-1.json")
+
+# The variant's "pipeline" member, added after "camera". An original must not
+# have one of its own.
+set(deferred_variant_path "deferred")
+set(deferred_variant_buffer "hdr32")
+
+# The variant's description is this sentence (<BUFFER> and <ORIGINAL>, i.e.
+# <group>/<name>, filled in), then the variant's note if it has one, then the
+# original's description.
+set(deferred_variant_intro "Deferred variant (light buffer <BUFFER>) of <ORIGINAL>: the same scene drawn through the G-buffer and one light volume per light, where the surface position comes from the stored window depth, not the rasteriser's interpolated position.")
+
+# Notes, per variant name (<group>-<name>): what else that variant checks.
+set(deferred_variant_note_shadowmask-strength-0-half-1 "Here the G-buffer's base target carries the lightmap (the demoted light) and its mask target the shadow mask, sampled where the fragment is, and the light pass applies each light's channel from it.")
