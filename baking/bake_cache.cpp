@@ -12,6 +12,8 @@
 #include <iterator>
 #include <string_view>
 
+#include <xxhash.h>
+
 namespace baking {
 namespace {
 
@@ -21,28 +23,20 @@ namespace fs = std::filesystem;
 // resolution (0: no maps), the bake's milliseconds, the texels of every
 // object with maps (lightmap, then shadow mask, N * N * 4 floats each), and a
 // checksum of every byte before it. Bump the version when the layout changes.
+// Version 2: the checksum is XXH3 (version 1 had FNV-1a over 64-bit words);
+// a version 1 file fails the checksum (or else the version) and is a miss.
 constexpr char kMagic[8] = {'L', 'C', 'T', 'S', 'B', 'A', 'K', 'E'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
 constexpr std::size_t kKeyLength = 64;  // hex SHA-256
 constexpr std::size_t kChecksumSize = 8;
 
-// The file's checksum guards against damage, not against an adversary, so
-// it is FNV-1a over 64-bit little-endian words (then the tail bytes): reading
-// a cached 512 x 512 bake (8 MiB) took 118 ms with a SHA-256 here and 41 ms
-// with this. Each step, (h ^ word) * prime, is a bijection of h and of the
-// word, so a change to any single word always changes the result.
-std::uint64_t contentChecksum(const std::uint8_t* data, std::size_t size) {
-  constexpr std::uint64_t kPrime = 0x100000001b3ull;
-  std::uint64_t h = 0xcbf29ce484222325ull;
-  std::size_t at = 0;
-  for (; at + 8 <= size; at += 8) {
-    std::uint64_t word = 0;
-    for (int i = 0; i < 8; ++i) word |= std::uint64_t(data[at + std::size_t(i)]) << (8 * i);
-    h = (h ^ word) * kPrime;
-  }
-  for (; at < size; ++at) h = (h ^ data[at]) * kPrime;
-  return h;
-}
+// The file's checksum guards against damage, not against an adversary (the
+// key guards against another scene), so it is a fast non-cryptographic hash:
+// XXH3's 64-bit hash (libxxhash). It replaced FNV-1a over 64-bit words, which
+// misses any two flipped bit-63s of words (two texels' sign bits:
+// baking/tests/bake_cache_test.cpp shows why), and it is faster: over 8 MiB
+// (a 512 x 512 bake) 0.5 ms against FNV's 3.4 ms on the development machine.
+std::uint64_t contentChecksum(const std::uint8_t* data, std::size_t size) { return XXH3_64bits(data, size); }
 
 void writeVec3(ByteWriter& w, const lighting::Vec3& v) {
   w.f64(v.x);

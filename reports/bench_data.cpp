@@ -235,7 +235,10 @@ void addBenchmarks(BenchSet& set, const Json& benchmarks, const std::string& sec
 BenchSet readBenchFile(const Json& file) {
   BenchSet set;
   if (!file.is_object()) return set;
-  if (file.contains("benchmarks")) addBenchmarks(set, arrayField(file, "benchmarks"), "");
+  // A plain Google Benchmark file; bench.json's flat top-level copy (for
+  // Google Benchmark's tools) repeats what "backends" and "prepare" hold.
+  if (file.contains("benchmarks") && !file.contains("backends"))
+    addBenchmarks(set, arrayField(file, "benchmarks"), "");
   for (const Json& backend : arrayField(file, "backends"))
     addBenchmarks(set, arrayField(backend, "benchmarks"), textField(backend, "backend"));
   addBenchmarks(set, arrayField(objectField(file, "prepare"), "benchmarks"), "");

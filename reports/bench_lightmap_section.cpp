@@ -39,8 +39,10 @@ void addPoints(svg::SeriesBuilder& errors, svg::SeriesBuilder& times, const Benc
     const std::size_t colour = second && !byBackend ? 1 : colourBase;
     plot.add(byBackend ? group + " " + what : what, {colour, true, second}, p);
   };
-  add(errors, "err_rmse", false, counter(e, "err_rmse"));
-  add(errors, "err_max_abs", true, counter(e, "err_max_abs"));
+  if (!isBroken(e)) {  // a broken image has no error to plot
+    add(errors, "err_rmse", false, counter(e, "err_rmse"));
+    add(errors, "err_max_abs", true, counter(e, "err_max_abs"));
+  }
   add(times, "bake", false, counter(e, "bake_ms"));
   add(times, "frame", true, e.medianMs);
 }
@@ -50,7 +52,7 @@ Table<const BenchEntry*> lightmapTable() {
   table.cssClass = "bench lightmap";
   table.columns = {
       textColumn("backend", backendOf),
-      textColumn("mode", [](const BenchEntry& e) { return e.name.mode; }),
+      markedTextColumn("mode", [](const BenchEntry& e) { return e.name.mode; }),
       numberColumn("N", lightmapResolution),
       counterColumn("bake ms", "bake_ms"),
       counterColumn("bake runs", "bake_runs"),

@@ -66,7 +66,15 @@ std::string backendOf(const BenchEntry& e) { return e.section.empty() ? e.name.b
 
 bool isPrepare(const BenchEntry& e) { return e.name.kind == "prepare"; }
 
-bool hasError(const BenchEntry& e) { return e.name.kind == "frame" && e.medianMs && counter(e, "err_rmse"); }
+bool isBroken(const BenchEntry& e) {
+  const auto pixels = counter(e, "err_nonfinite_pixels");
+  return pixels && *pixels > 0;
+}
+
+bool hasError(const BenchEntry& e) {
+  const auto rmse = counter(e, "err_rmse");
+  return e.name.kind == "frame" && e.medianMs && rmse && std::isfinite(*rmse) && !isBroken(e);
+}
 
 std::optional<double> lightmapResolution(const BenchEntry& e) {
   constexpr std::string_view prefix = "lightmap-";

@@ -46,7 +46,11 @@ std::optional<double> limitRatio(const BenchEntry& e);
 std::string backendOf(const BenchEntry& e);
 
 bool isPrepare(const BenchEntry& e);
-// A `frame` benchmark with a time and err_rmse: a point of the speed-against-error plot.
+// A benchmark whose image had NaN or infinite pixels (err_nonfinite_pixels
+// > 0): it has no error (err_rmse is null), and no page shows it as a point.
+bool isBroken(const BenchEntry& e);
+// A `frame` benchmark with a time and a finite err_rmse, not broken: a point
+// of the speed-against-error plot.
 bool hasError(const BenchEntry& e);
 // N of a `lightmap-N` mode (docs/bench-format.md); nullopt for other modes.
 std::optional<double> lightmapResolution(const BenchEntry& e);

@@ -29,6 +29,7 @@ svg.plot { max-width: 100%; height: auto; border: 1px solid #ddd; display: block
 .plotbox { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 1em; }
 .fits { font-size: .9em; }
 tr.front td:first-child, tr.front td:nth-child(2) { font-weight: bold; }
+tr.broken td { background: #fee; }
 .err { color: #b00; } .note { color: #555; font-size: .9em; }
 )";
 

@@ -1,6 +1,8 @@
 // Speed against error: one point per (backend, mode) of the `frame`
 // benchmarks, median frame time against err_rmse, the Pareto front ringed
-// and joined by steps, and the table of the points in time order.
+// and joined by steps, and the table of the points in time order. A broken
+// mode (NaN or infinite pixels: isBroken) is no point and never on the
+// front: it is listed after the points, marked broken.
 #include "reports/bench_report.h"
 #include "reports/bench_sections.h"
 #include "reports/bench_table.h"
@@ -61,11 +63,16 @@ Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& on
   Table<const BenchEntry*> table;
   table.cssClass = "bench pareto";
   const auto front = [&onFront](const BenchEntry& e) { return onFront.at(&e); };
-  table.rowClass = [front](const BenchEntry* e) { return std::string(front(*e) ? "front" : ""); };
+  table.rowClass = [front](const BenchEntry* e) {
+    return std::string(isBroken(*e) ? "broken" : front(*e) ? "front" : "");
+  };
   table.columns = {
       textColumn("backend", backendOf),
-      textColumn("mode", [](const BenchEntry& e) { return e.name.mode; }),
-      textColumn("Pareto front", [front](const BenchEntry& e) { return std::string(front(e) ? "yes" : ""); }),
+      markedTextColumn("mode", [](const BenchEntry& e) { return e.name.mode; }),
+      textColumn("Pareto front",
+                 [front](const BenchEntry& e) {
+                   return std::string(isBroken(e) ? "no: broken" : front(e) ? "yes" : "");
+                 }),
       numberColumn("median ms", [](const BenchEntry& e) { return e.medianMs; }),
       numberColumn("min ms", [](const BenchEntry& e) { return e.minMs; }),
       numberColumn("max ms", [](const BenchEntry& e) { return e.maxMs; }),
@@ -81,12 +88,13 @@ Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& on
 }
 
 // The scatter of one scene and its table; colours by backend (overview) or
-// by mode (a backend page).
+// by mode (a backend page). `broken`: the scene's broken modes, table rows only.
 void scatterSection(std::ostream& out, const BenchModel& m, const std::string& scene, const Entries& points,
-                    bool byBackend) {
+                    const Entries& broken, bool byBackend) {
   std::vector<TimeError> te;
   for (const BenchEntry* e : points) te.emplace_back(*e->medianMs, *counter(*e, "err_rmse"));
   const std::vector<bool> front = paretoFront(te);
+  out << "<h3>" << escapeText(scene) << "</h3>\n";
 
   svg::Plot plot;
   plot.title = scene + ": speed against error (frame)";
@@ -103,18 +111,23 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
     series.add(group, {byBackend ? m.backendIndex(group) : m.modeIndex(group), false, false}, p);
   }
   plot.series.insert(plot.series.begin(), frontLine(te, front));
-  out << "<h3>" << escapeText(scene) << "</h3>\n" << svg::render(plot);
+  if (!points.empty()) out << svg::render(plot);
 
   std::map<const BenchEntry*, bool> onFront;
   for (std::size_t i = 0; i < points.size(); ++i) onFront[points[i]] = front[i];
-  const bool withBake = std::any_of(points.begin(), points.end(), [](const BenchEntry* e) {
-    return counter(*e, "bake_ms").has_value();
-  });
+  for (const BenchEntry* e : broken) onFront[e] = false;
+  const auto bakes = [](const BenchEntry* e) { return counter(*e, "bake_ms").has_value(); };
+  const bool withBake =
+      std::any_of(points.begin(), points.end(), bakes) || std::any_of(broken.begin(), broken.end(), bakes);
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return te[a] < te[b]; });
   Entries rows;
   for (std::size_t i : order) rows.push_back(points[i]);
+  Entries brokenRows = broken;  // after the points, in time order
+  std::stable_sort(brokenRows.begin(), brokenRows.end(),
+                   [](const BenchEntry* a, const BenchEntry* b) { return *a->medianMs < *b->medianMs; });
+  rows.insert(rows.end(), brokenRows.begin(), brokenRows.end());
   writeTable(out, paretoTable(onFront, withBake), rows);
 }
 
@@ -124,14 +137,20 @@ void speedErrorSection(std::ostream& out, const BenchModel& m, const Entries& ca
   out << "<h2 id=\"pareto\">Speed against error</h2>\n<p class=\"note\">One point per (backend, mode) of the "
          "<code>frame</code> benchmarks: median frame time against the RMS error of the image against the "
          "<code>--ideal</code> reference. Ringed points, joined by the black steps, are the Pareto front: no other "
-         "point is both faster and more accurate.</p>\n";
+         "point is both faster and more accurate. A mode whose image has NaN or infinite pixels "
+         "(<code>err_nonfinite_pixels</code> &gt; 0) is broken: it has no error, is no point and never on the "
+         "front, and is listed, marked broken, after the points of its scene.</p>\n";
   const Entries withError = filter(candidates, hasError);
-  if (withError.empty()) {
+  const Entries broken =
+      filter(candidates, [](const BenchEntry& e) { return e.name.kind == "frame" && e.medianMs && isBroken(e); });
+  if (withError.empty() && broken.empty()) {
     out << "<p>No frame benchmark has error counters.</p>\n";
     return;
   }
-  for (const std::string& scene : scenesOf(withError))
-    scatterSection(out, m, scene, ofScene(withError, scene), byBackend);
+  Entries all = withError;
+  all.insert(all.end(), broken.begin(), broken.end());
+  for (const std::string& scene : scenesOf(all))
+    scatterSection(out, m, scene, ofScene(withError, scene), ofScene(broken, scene), byBackend);
 }
 
 }  // namespace benchpages

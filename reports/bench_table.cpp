@@ -25,6 +25,17 @@ EntryColumn counterColumn(std::string header, const std::string& key) {
   return numberColumn(std::move(header), [key](const BenchEntry& e) { return counter(e, key); });
 }
 
+std::string brokenMark(const BenchEntry& e) {
+  if (!isBroken(e)) return "";
+  return " <span class=\"err\">broken: " + fmt(counter(e, "err_nonfinite_pixels")) + " non-finite pixels</span>";
+}
+
+EntryColumn markedTextColumn(std::string header, std::function<std::string(const BenchEntry&)> text) {
+  return {std::move(header), [text = std::move(text)](const BenchEntry* e) {
+            return "<td>" + escapeText(text(*e)) + brokenMark(*e) + "</td>";
+          }};
+}
+
 std::optional<std::string> failureOf(const BenchEntry& e) {
   if (!e.error.empty() && !e.medianMs) return e.error;
   return std::nullopt;
@@ -62,7 +73,8 @@ std::vector<NumberColumn> numberColumns(const Entries& entries) {
       {"lights_per_pixel", "lights/pixel"}, {"pixels_per_s", "pixels/s"},
       {"pixel_light_evals_per_s", "pixel-light evals/s"}, {"err_rmse", "err_rmse"},
       {"err_max_abs", "err_max_abs"}, {"err_psnr_db", "err_psnr_db"},
-      {"err_perceptual_fail", "err_perceptual_fail"}, {"bake_ms", "bake ms"}, {"bake_runs", "bake runs"},
+      {"err_perceptual_fail", "err_perceptual_fail"}, {"err_nonfinite_pixels", "err_nonfinite_pixels"},
+      {"bake_ms", "bake ms"}, {"bake_runs", "bake runs"},
       {"lightmap_texels", "lightmap texels"}, {"flops_per_pixel_light", "flops/pixel-light"},
       {"limit_ms", "limit ms"}};
   for (const auto& [key, header] : known)
@@ -87,7 +99,8 @@ void benchTable(std::ostream& out, const Entries& entries) {
   if (entries.empty()) return;
   Table<const BenchEntry*> table;
   table.cssClass = "bench";
-  table.columns.push_back(textColumn("benchmark", [](const BenchEntry& e) { return e.name.full; }));
+  table.columns.push_back(markedTextColumn("benchmark", [](const BenchEntry& e) { return e.name.full; }));
+  table.rowClass = [](const BenchEntry* e) { return std::string(isBroken(*e) ? "broken" : ""); };
   for (NumberColumn& c : numberColumns(entries)) table.columns.push_back(numberColumn(c.header, c.value, c.digits));
   table.failure = [](const BenchEntry* e) { return failureOf(*e); };
   writeTable(out, table, entries);

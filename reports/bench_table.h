@@ -43,6 +43,11 @@ using EntryValue = std::function<std::optional<double>(const BenchEntry&)>;
 EntryColumn textColumn(std::string header, std::function<std::string(const BenchEntry&)> text);
 EntryColumn numberColumn(std::string header, EntryValue value, int digits = 4);
 EntryColumn counterColumn(std::string header, const std::string& key);  // numberColumn of counter(e, key)
+// textColumn, with " broken: N non-finite pixels" in red after the text of a
+// broken benchmark (isBroken).
+EntryColumn markedTextColumn(std::string header, std::function<std::string(const BenchEntry&)> text);
+// That mark: "" unless `e` is broken.
+std::string brokenMark(const BenchEntry& e);
 // The error of a benchmark that has no time (it failed), else nullopt.
 std::optional<std::string> failureOf(const BenchEntry& e);
 

@@ -82,9 +82,10 @@ std::string testDetails(const Json& test) {
 Case testCase(const Json& test) {
   Case c;
   const std::string verdict = textField(test, "verdict");
-  c.classname = textField(test, "group");
+  const std::string group = textField(test, "group");
+  c.classname = junitClassname(textField(test, "backend"), group);
   c.name = textField(test, "name");
-  if (c.name.empty()) c.name = c.classname + "." + textField(test, "scene") + "." + textField(test, "backend");
+  if (c.name.empty()) c.name = group + "." + textField(test, "scene") + "." + textField(test, "backend");
   c.seconds = numberField(objectField(test, "timings_ms"), "total").value_or(0) / 1000.0;
   c.outcome = outcomeOf(verdict);
   c.type = verdict.empty() ? "unknown" : verdict;
@@ -125,7 +126,7 @@ Case mutantCase(const Json& mutant) {
   Case c;
   const std::string status = textField(mutant, "status");
   const std::string name = textField(mutant, "mutant");
-  c.classname = "mutants";
+  c.classname = junitClassname(textField(mutant, "backend"), "mutants");
   c.name = "mutants." + name + "." + textField(mutant, "backend");
   c.type = status.empty() ? "unknown" : status;
   std::string killers;
@@ -152,7 +153,10 @@ Case mutantCase(const Json& mutant) {
   return c;
 }
 
+// <testsuites> carries no `skipped`: the JUnit schema that Jenkins validates
+// with (reports/tests/junit.xsd) allows it on <testsuite> only.
 std::string openTag(const char* tag, const Suite& suite, std::string_view extra = "") {
+  const bool root = std::string_view(tag) == "testsuites";
   int failures = 0, errors = 0, skipped = 0;
   double seconds = 0;
   for (const Case& c : suite.cases) {
@@ -163,8 +167,9 @@ std::string openTag(const char* tag, const Suite& suite, std::string_view extra 
   }
   std::string text = "<" + std::string(tag) + " name=\"" + escapeXmlAttribute(suite.name) + "\" tests=\"" +
                      std::to_string(suite.cases.size()) + "\" failures=\"" + std::to_string(failures) +
-                     "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) +
-                     "\" time=\"" + formatSeconds(suite.seconds.value_or(seconds)) + "\"";
+                     "\" errors=\"" + std::to_string(errors) + "\"" +
+                     (root ? std::string() : " skipped=\"" + std::to_string(skipped) + "\"") + " time=\"" +
+                     formatSeconds(suite.seconds.value_or(seconds)) + "\"";
   return text + std::string(extra) + ">\n";
 }
 
@@ -208,7 +213,7 @@ std::vector<Suite> suites(const Json& results) {
       const bool ran = comparison::parseBackendStatus(status) == comparison::BackendStatus::Ran;
       if (suite.cases.empty() && !ran) {
         Case c;
-        c.classname = "backend";
+        c.classname = junitClassname(backendName, "backend");
         c.name = "backend." + backendName;
         c.type = status.empty() ? "unknown" : status;
         c.outcome = backendOutcome(status);
@@ -232,6 +237,12 @@ std::vector<Suite> suites(const Json& results) {
 }
 
 }  // namespace
+
+std::string junitClassname(std::string_view backend, std::string_view group) {
+  if (backend.empty()) return std::string(group);
+  if (group.empty()) return std::string(backend);
+  return std::string(backend) + "." + std::string(group);
+}
 
 std::string junitXml(const Json& results) {
   checkResultsFormat(results);

@@ -5,12 +5,14 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace reports {
 
 // One <testsuite> per backend (name = the test-name suffix, e.g. "vulkan"),
-// one <testcase classname="GROUP" name="GROUP.SCENE.BACKEND" time="SECONDS">
-// per test, and a "mutants" <testsuite> (killed passes, survived fails):
+// one <testcase classname="BACKEND.GROUP" name="GROUP.SCENE.BACKEND"
+// time="SECONDS"> per test, and a "mutants" <testsuite> (classname
+// "BACKEND.mutants"; killed passes, survived fails):
 //   Fail, UnexpectedPass, unknown verdicts   <failure message type>
 //   Crash, Timeout                           <error message type>
 //   NotSupported                             <skipped message>
@@ -20,9 +22,18 @@ namespace reports {
 //   QualityWarning, Flake, Pass              pass; QualityWarning and Flake with <system-out>
 // (the classification is comparison::ciOutcome, comparison/verdict.h).
 // A backend that did not run ("NotSupported" or "error") and has no tests
-// still shows, as one testcase "backend.BACKEND" (skipped or error).
+// still shows, as one testcase "backend.BACKEND" of classname "BACKEND.backend"
+// (skipped or error).
+// The XML validates against the JUnit schema Jenkins uses (reports/tests/junit.xsd):
+// the counts of skips are on each <testsuite>, never on <testsuites>.
 // Throws std::invalid_argument when `results` is not a results object.
 std::string junitXml(const nlohmann::ordered_json& results);
+
+// A testcase's classname, "BACKEND.GROUP" ("vulkan.attenuation"): Jenkins
+// splits it at its last dot into package and class, GitLab lists it beside
+// each test, so the tests of one backend show together. Either part alone
+// when the other is empty.
+std::string junitClassname(std::string_view backend, std::string_view group);
 
 // junitXml, written atomically (temporary file, then rename).
 void writeJunit(const nlohmann::ordered_json& results, const std::filesystem::path& file);

@@ -94,6 +94,81 @@ Json deviceFromContext(const Json& context, const std::string& suffix) {
   return device;
 }
 
+// The name an entry of `suffix`'s process has in the flat top-level array:
+// its own when its second part is already the combination suffix (every
+// name of frame/<suffix>/... and prepare/cpu/..., docs/bench-format.md), else
+// "<suffix>/<name>", so that names stay unique across backends.
+std::string flatName(const std::string& name, const std::string& suffix) {
+  const std::size_t first = name.find('/');
+  if (first != std::string::npos && name.compare(first + 1, suffix.size(), suffix) == 0 &&
+      (first + 1 + suffix.size() == name.size() || name[first + 1 + suffix.size()] == '/'))
+    return name;
+  return suffix + "/" + name;
+}
+
+void appendFlat(Json& flat, const Json& benchmarks, const std::string& suffix) {
+  if (!benchmarks.is_array()) return;
+  for (Json entry : benchmarks) {
+    if (!entry.is_object()) continue;
+    for (const char* key : {"name", "run_name"})
+      if (entry.contains(key) && entry[key].is_string())
+        entry[key] = flatName(entry[key].get<std::string>(), suffix);
+    flat.push_back(std::move(entry));
+  }
+}
+
+// Google Benchmark's own context keys (json_reporter.cc); the others are the
+// lines a process adds.
+bool isStandardContextKey(const std::string& key) {
+  static const char* const keys[] = {"date",     "host_name",          "executable",
+                                     "num_cpus", "mhz_per_cpu",        "cpu_scaling_enabled",
+                                     "caches",   "load_avg",           "library_build_type",
+                                     "json_schema_version"};
+  for (const char* k : keys)
+    if (key == k) return true;
+  return false;
+}
+
+// The top-level `context`, in the shape Google Benchmark writes, for its
+// tools (tools/compare.py): the standard keys of the first process that
+// wrote a context (the CPU preparation, else the first backend), then every
+// process's own lines, a backend's under "<suffix>." unless they already are.
+Json flatContext(const Json& prepare, const Json& backends) {
+  std::vector<std::pair<std::string, const Json*>> sources;  // (prefix, context)
+  if (prepare.is_object() && prepare.contains("context") && prepare["context"].is_object())
+    sources.emplace_back("", &prepare["context"]);
+  for (const Json& b : backends)
+    if (b.contains("context") && b["context"].is_object() && !b["context"].empty())
+      sources.emplace_back(b.value("backend", ""), &b["context"]);
+  Json context = Json::object();
+  for (const auto& [prefix, source] : sources) {
+    if (source->empty()) continue;
+    for (auto it = source->begin(); it != source->end(); ++it)
+      if (isStandardContextKey(it.key())) context[it.key()] = it.value();
+    break;
+  }
+  for (const auto& [prefix, source] : sources)
+    for (auto it = source->begin(); it != source->end(); ++it) {
+      if (isStandardContextKey(it.key())) continue;
+      const std::string key =
+          prefix.empty() || it.key().rfind(prefix + ".", 0) == 0 ? it.key() : prefix + "." + it.key();
+      if (!context.contains(key)) context[key] = it.value();
+    }
+  return context;
+}
+
+// Google Benchmark's top-level "context" and "benchmarks" (every backend's
+// entries, then the CPU preparation's), beside the per-backend structure,
+// so that Google Benchmark's tools read bench.json as they read its own files.
+void addFlatArrays(Json& bench) {
+  Json flat = Json::array();
+  for (const Json& b : bench["backends"])
+    appendFlat(flat, b.value("benchmarks", Json::array()), b.value("backend", ""));
+  if (bench["prepare"].is_object()) appendFlat(flat, bench["prepare"].value("benchmarks", Json::array()), "cpu");
+  bench["context"] = flatContext(bench["prepare"], bench["backends"]);
+  bench["benchmarks"] = std::move(flat);
+}
+
 }  // namespace
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
@@ -173,17 +248,18 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
                         {"benchmarks", benchmarks}});
   }
 
-  const Json bench = {{"format", "lightcts-bench"},
-                      {"version", 1},
-                      {"lightcts_revision", revision()},
-                      {"started_utc", startedUtc},
-                      {"duration_s", std::chrono::duration<double>(Clock::now() - started).count()},
-                      {"command", options.commandLine},
-                      {"quick", options.quick},  // a smoke test, not a measurement
-                      {"machine", machineJson()},
-                      {"peak", peak},
-                      {"backends", backends},
-                      {"prepare", prepare}};
+  Json bench = {{"format", "lightcts-bench"},
+                {"version", 1},
+                {"lightcts_revision", revision()},
+                {"started_utc", startedUtc},
+                {"duration_s", std::chrono::duration<double>(Clock::now() - started).count()},
+                {"command", options.commandLine},
+                {"quick", options.quick},  // a smoke test, not a measurement
+                {"machine", machineJson()},
+                {"peak", peak},
+                {"backends", backends},
+                {"prepare", prepare}};
+  addFlatArrays(bench);
   reports::writeBenchReport(bench, outDir);
   imaging::writeFileAtomically(outDir / "bench.json", bench.dump(1) + "\n");
   out << "bench: " << (outDir / "bench.json").string() << ", pages in " << (outDir / "index.html").string() << std::endl;

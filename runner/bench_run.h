@@ -3,7 +3,9 @@
 // per process; a driver crash costs one combination, not the run), the CPU
 // preparation benchmarks, and the peak-rate calibration, merged into
 // DIR/bench.json (docs/bench-format.md) and written as HTML pages
-// (DIR/index.html, DIR/<backend>.html).
+// (DIR/index.html, DIR/<backend>.html). bench.json also carries Google
+// Benchmark's top-level "context" and "benchmarks" (every backend's entries
+// in one array), so that Google Benchmark's tools/compare.py reads it.
 #pragma once
 
 #include <iosfwd>

@@ -1,13 +1,11 @@
 #include "runner/run_metadata.h"
 
+#include "runner/git_revision.h"  // generated at every build (cmake/git_revision.cmake)
+
 #include <ctime>
 #include <fstream>
 #include <thread>
 #include <unistd.h>
-
-#ifndef LIGHTCTS_REVISION
-#define LIGHTCTS_REVISION "unknown"
-#endif
 
 namespace runner {
 namespace {

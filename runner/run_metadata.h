@@ -8,7 +8,7 @@
 
 namespace runner {
 
-std::string revision();      // `git describe` of the source at configure time, or "unknown"
+std::string revision();      // `git describe --always --dirty` of the source at build time, or "unknown"
 std::string utcTimestamp();  // now, ISO 8601 UTC: 2026-12-01T15:04:05Z
 nlohmann::ordered_json machineJson();  // hostname, cpu, cores, os
 

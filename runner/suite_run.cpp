@@ -4,6 +4,7 @@
 #include "comparison/verdict.h"
 #include "conformance/scene_catalogue.h"
 #include "lighting/scene_loader.h"
+#include "reports/csv_writer.h"
 #include "reports/html_report.h"
 #include "reports/junit_writer.h"
 #include "runner/expected_failures.h"
@@ -299,7 +300,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   fs::create_directories(logsDir);
   // Evidence of an earlier run in the same folder would be mistaken for this one's.
   for (const char* stale : {"evidence", "mutants", "report"}) fs::remove_all(outDir / stale);
-  fs::remove(outDir / "results.json");
+  for (const char* stale : {"results.json", "junit.xml", "results.csv", "failures.csv"}) fs::remove(outDir / stale);
 
   Json backendsJson = Json::array();
   Json tests = Json::array();
@@ -397,6 +398,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"slowest", slowest}};
   reports::writeHtmlReport(results, outDir / "report");
   reports::writeJunit(results, outDir / "junit.xml");
+  reports::writeRunCsvs(results, outDir);  // results.csv, failures.csv (deqp-runner's lists)
   // Last: its presence says the run finished and the other files are complete.
   imaging::writeFileAtomically(outDir / "results.json", results.dump(1) + "\n");
 

@@ -9,8 +9,10 @@ packages=(
   cmake g++ ninja-build pkg-config git
   # the CPU model, the command line and the reference
   nlohmann-json3-dev libglm-dev libcli11-dev libopenimageio-dev
+  libxxhash-dev  # XXH3, the bake cache file's checksum
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  libbenchmark-tools python3-scipy  # Google Benchmark's tools/compare.py reads bench.json (its test)
   # shaders: GLSL -> SPIR-V at build time (glslang), SPIR-V -> GLSL for OpenGL
   glslang-tools glslang-dev spirv-cross libspirv-cross-c-shared-dev
   # Vulkan on Mesa's lavapipe, with the validation layers for test runs
@@ -20,6 +22,8 @@ packages=(
   # the report test: every image of report/index.html loads in headless Chromium
   # (about 350 MB installed; its test is skipped where it is missing)
   chromium
+  # the junit test: junit.xml validates against the JUnit XML schema (xmllint --schema)
+  libxml2-utils
 )
 
 missing=()

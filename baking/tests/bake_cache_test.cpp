@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <vector>
 
 namespace baking::testing {
 namespace {
@@ -182,6 +184,85 @@ TEST_P(DamagedCacheTest, DamagedFileIsAMissAndIsRewritten) {
 INSTANTIATE_TEST_SUITE_P(Damage, DamagedCacheTest,
                          ::testing::Values("truncated", "empty", "extended", "flipped-texel", "flipped-header",
                                            "other-key"));
+
+// The checksum the cache file had before format version 2: FNV-1a over 64-bit
+// little-endian words. Kept here only to prove the damage below is its blind spot.
+std::uint64_t fnv1aOverWords(const std::vector<std::uint8_t>& bytes, std::size_t size) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  std::size_t at = 0;
+  for (; at + 8 <= size; at += 8) {
+    std::uint64_t word = 0;
+    for (int i = 0; i < 8; ++i) word |= std::uint64_t(bytes[at + std::size_t(i)]) << (8 * i);
+    h = (h ^ word) * 0x100000001b3ull;
+  }
+  for (; at < size; ++at) h = (h ^ bytes[at]) * 0x100000001b3ull;
+  return h;
+}
+
+// Two texels whose sign bits flip, each the upper float of an odd-numbered
+// 64-bit word, so each flip is bit 63 of its word. FNV over words misses it:
+// flipping bit 63 of a word w_i turns h_i ^ w_i into (h_i ^ w_i) + 2^63
+// (mod 2^64), and (x + 2^63) * P = x * P + 2^63 * P = x * P + 2^63 for the odd
+// prime P, so h_{i+1} differs in bit 63 alone. Every later step keeps that:
+// XOR with an unchanged word leaves the difference at bit 63, and the odd
+// multiply again maps +2^63 to +2^63. The second flip adds another 2^63, and
+// 2^63 + 2^63 = 0 (mod 2^64): the final FNV is the same as the undamaged
+// file's, while two texels have changed sign. XXH3 must see it.
+TEST_F(BakeCacheTest, TwoFlippedSignBitsAtOddWordsAreAMiss) {
+  const auto first = bake(scene());
+  const fs::path file = bakeCacheFile(first->cacheKey, options_);
+  std::vector<std::uint8_t> bytes(fs::file_size(file));
+  std::ifstream(file, std::ios::binary).read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+  // The texels: the 8 x 8 lightmap and shadow mask, four floats a texel,
+  // then the 8-byte checksum.
+  const std::size_t checksumAt = bytes.size() - 8;
+  const std::size_t texelsAt = checksumAt - 2 * 8 * 8 * 4 * sizeof(float);
+  std::vector<std::size_t> flips;
+  for (std::size_t at = texelsAt; at < checksumAt && flips.size() < 2; at += 4) {
+    // Offset 12 mod 16: the upper half of an odd word; its byte 3 holds the
+    // float's sign bit, which is the word's bit 63.
+    float value = 0;
+    std::memcpy(&value, &bytes[at], sizeof value);
+    if (at % 16 == 12 && value != 0) flips.push_back(at);
+  }
+  ASSERT_EQ(flips.size(), 2u);
+  std::vector<std::uint8_t> damaged = bytes;
+  for (std::size_t at : flips) damaged[at + 3] ^= 0x80;
+  ASSERT_NE(damaged, bytes);
+  // The very damage the old checksum cannot see.
+  ASSERT_EQ(fnv1aOverWords(damaged, checksumAt), fnv1aOverWords(bytes, checksumAt));
+  std::ofstream(file, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(damaged.data()), std::streamsize(damaged.size()));
+
+  std::shared_ptr<const lighting::BakedLighting> again;
+  ASSERT_NO_THROW(again = bake(scene()));
+  EXPECT_FALSE(again->fromCache);  // a miss: baked again
+  expectSameTexels(*first, *again);
+  const auto third = bake(scene());
+  EXPECT_TRUE(third->fromCache);  // and the file was rewritten
+  expectSameTexels(*first, *third);
+}
+
+// A file of format version 1 (FNV checksum), intact by its own rules, is a
+// miss after the change to XXH3, never an error, and is rewritten.
+TEST_F(BakeCacheTest, FormatVersionOneFileIsAMiss) {
+  const auto first = bake(scene());
+  const fs::path file = bakeCacheFile(first->cacheKey, options_);
+  std::vector<std::uint8_t> bytes(fs::file_size(file));
+  std::ifstream(file, std::ios::binary).read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+  const std::size_t checksumAt = bytes.size() - 8;
+  for (int i = 0; i < 4; ++i) bytes[8 + std::size_t(i)] = i == 0 ? 1 : 0;  // the version, after the magic
+  const std::uint64_t fnv = fnv1aOverWords(bytes, checksumAt);
+  for (int i = 0; i < 8; ++i) bytes[checksumAt + std::size_t(i)] = std::uint8_t(fnv >> (8 * i));
+  std::ofstream(file, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+
+  std::shared_ptr<const lighting::BakedLighting> again;
+  ASSERT_NO_THROW(again = bake(scene()));
+  EXPECT_FALSE(again->fromCache);
+  expectSameTexels(*first, *again);
+  EXPECT_TRUE(bake(scene())->fromCache);
+}
 
 TEST_F(BakeCacheTest, UnwritableCacheFolderStillBakes) {
   // The cache "folder" is a plain file: nothing can be created under it.

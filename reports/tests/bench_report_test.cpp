@@ -231,6 +231,76 @@ TEST(BenchReport, SharesThePageFrameWithTheConformanceReport) {
   EXPECT_EQ(bench.find(".v-Pass"), std::string::npos);
 }
 
+// A broken mode (NaN or infinite pixels, issue 16) is never a point. The
+// field on vulkan, median ms and err_rmse: all-lights 10 1e-4, deferred-hdr32
+// 5 2e-4, deferred-ldr8 3 with 1200 non-finite pixels (its error counters
+// null, as bench.json writes them), deferred-hdr16 2 with 7 non-finite pixels
+// and a zero error (what the reporter wrote before it wrote null). Were
+// hdr16 a point, (2 ms, 0) would dominate every other: the front would be it
+// alone. Without the broken two the front is hdr32 and all-lights. The
+// lightmap scene has one mode, realtime, broken: its scene has no plot.
+nlohmann::ordered_json brokenBench() {
+  using Json = nlohmann::ordered_json;
+  const auto run = [](const std::string& name, double ms, const Json& counters) {
+    Json r = {{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"iterations", 10},
+              {"real_time", ms}, {"cpu_time", ms}, {"time_unit", "ms"}};
+    for (auto it = counters.begin(); it != counters.end(); ++it) r[it.key()] = it.value();
+    return r;
+  };
+  const auto fine = [](double rmse) {
+    return Json{{"err_rmse", rmse}, {"err_max_abs", 10 * rmse}, {"err_psnr_db", 50.0}, {"err_perceptual_fail", 0.0},
+                {"err_nonfinite_pixels", 0}};
+  };
+  const Json broken = {{"err_rmse", nullptr}, {"err_max_abs", nullptr}, {"err_psnr_db", nullptr},
+                       {"err_perceptual_fail", 0.25}, {"err_nonfinite_pixels", 1200}};
+  const Json zeroed = {{"err_rmse", 0.0}, {"err_max_abs", 0.0}, {"err_psnr_db", 0.0}, {"err_perceptual_fail", 0.0},
+                       {"err_nonfinite_pixels", 7}};
+  const std::string field = "frame/vulkan/lights64-1280x720/";
+  const Json benchmarks = {run(field + "all-lights", 10, fine(1e-4)), run(field + "deferred-hdr32", 5, fine(2e-4)),
+                           run(field + "deferred-ldr8", 3, broken), run(field + "deferred-hdr16", 2, zeroed),
+                           run("frame/vulkan/lightmap-1280x720/realtime", 4, broken)};
+  return {{"format", "lightcts-bench"},
+          {"backends", Json::array({{{"backend", "vulkan"}, {"status", "ran"}, {"benchmarks", benchmarks}}})}};
+}
+
+TEST(BenchReport, ABrokenModeIsListedAsBrokenAndNeverAPoint) {
+  const BenchSet set = readBenchFile(brokenBench());
+  EXPECT_FALSE(entry(set, "frame/vulkan/lights64-1280x720/deferred-ldr8").counters.count("err_rmse"))
+      << "null reads as absent";
+  for (const std::string& page : {benchOverviewHtml(brokenBench()), benchBackendHtml(brokenBench(), "vulkan")}) {
+    EXPECT_EQ(frontPoints(page), (std::set<std::string>{"vulkan/deferred-hdr32", "vulkan/all-lights"}));
+    EXPECT_EQ(count(page, "<svg "), 1) << "the field's scatter; the lightmap scene's only mode is broken";
+    EXPECT_EQ(count(page, "<circle class=\"pt"), 2);
+    EXPECT_EQ(page.find("data-point=\"vulkan/deferred-ldr8\""), std::string::npos);
+    EXPECT_EQ(page.find("data-point=\"vulkan/deferred-hdr16\""), std::string::npos);
+    // The Pareto table: the points in time order, then the broken modes in time order.
+    const std::size_t hdr32 = page.find("<td>deferred-hdr32</td><td>yes</td>");
+    const std::size_t hdr16 = page.find(
+        "<tr class=\"broken\"><td>vulkan</td><td>deferred-hdr16 <span class=\"err\">broken: 7 non-finite "
+        "pixels</span></td><td>no: broken</td><td class=\"n\">2</td>");
+    const std::size_t ldr8 = page.find(
+        "<tr class=\"broken\"><td>vulkan</td><td>deferred-ldr8 <span class=\"err\">broken: 1200 non-finite "
+        "pixels</span></td><td>no: broken</td><td class=\"n\">3</td><td class=\"n\">3</td><td class=\"n\">3</td>"
+        "<td class=\"n\">1</td><td class=\"n\">-</td><td class=\"n\">-</td><td class=\"n\">-</td>");
+    ASSERT_NE(hdr32, std::string::npos);
+    ASSERT_NE(hdr16, std::string::npos);
+    ASSERT_NE(ldr8, std::string::npos);
+    EXPECT_LT(page.find("<td>all-lights</td><td>yes</td>"), hdr16);
+    EXPECT_LT(hdr16, ldr8);
+    // The lightmap scene: its heading and its table, no plot.
+    EXPECT_NE(page.find("<h3>lightmap-1280x720</h3>\n<table class=\"bench pareto\">"), std::string::npos);
+    EXPECT_NE(page.find("<td>realtime <span class=\"err\">broken: 1200 non-finite pixels</span></td>"),
+              std::string::npos);
+  }
+  // Every benchmark on the backend's page: marked, with the count in its column.
+  const std::string vulkan = benchBackendHtml(brokenBench(), "vulkan");
+  EXPECT_NE(vulkan.find("<tr class=\"broken\"><td>frame/vulkan/lights64-1280x720/deferred-ldr8 <span "
+                        "class=\"err\">broken: 1200 non-finite pixels</span></td>"),
+            std::string::npos);
+  EXPECT_NE(vulkan.find("<th>err_nonfinite_pixels</th>"), std::string::npos);
+  EXPECT_NE(vulkan.find("<tr><td>frame/vulkan/lights64-1280x720/all-lights</td>"), std::string::npos);
+}
+
 TEST(BenchReport, EmptyBenchStillWritesPages) {
   const std::string html = benchOverviewHtml(nlohmann::ordered_json::parse(R"({"format": "lightcts-bench"})"));
   EXPECT_NE(html.find("No frame benchmark has error counters."), std::string::npos);

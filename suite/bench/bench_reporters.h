@@ -1,12 +1,13 @@
 // The reporters both benchmark programs (the frame benchmarks and the CPU
 // preparation benchmarks) run with: Google Benchmark's console and JSON
-// reporters, but with the plain names of docs/bench-format.md and no NaN in
-// the JSON.
+// reporters, but with the plain names of docs/bench-format.md and null, not
+// NaN or Infinity, in the JSON.
 #pragma once
 
 #include <benchmark/benchmark.h>
 
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,5 +22,9 @@ struct Reporters {
 // --benchmark_out writes JSON (the default format). CSV keeps Google
 // Benchmark's own, names unchanged. `flags`: the Google Benchmark flags given.
 Reporters plainNameReporters(const std::vector<std::string_view>& flags);
+
+// `json` with every NaN or infinite value (NaN, Infinity, -Infinity, nan,
+// inf) written as null; text inside strings is left alone.
+std::string nullForNonFinite(const std::string& json);
 
 }  // namespace bench

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace bench {
@@ -92,6 +94,15 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
         return parsed;
       }
       settings.peakGflops = gflops;
+    } else if (i > 0 && startsWith(a, "--mutant=", value)) {
+      const std::optional<shaders::Mutant> mutant = shaders::mutantFromName(value);
+      if (!mutant) {
+        std::fprintf(stderr, "render_bench: --mutant: no mutant '%s' (shaders/shader_variant.h)\n",
+                     std::string(value).c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
+      settings.mutant = *mutant;
     } else if (i > 0 && a == "--quick") settings.quick = true;
     else if (i > 0 && a == "--suite_scenes") settings.suiteScenes = true;
     else parsed.rest.push_back(argv[i]);

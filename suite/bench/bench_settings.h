@@ -5,6 +5,7 @@
 #pragma once
 
 #include "backends/backend_combinations.h"
+#include "shaders/shader_variant.h"
 
 #include <filesystem>
 #include <optional>
@@ -20,6 +21,9 @@ struct Settings {
   bool quick = false;
   bool suiteScenes = false;
   std::filesystem::path scenes;  // --scenes; the caller's default when not given
+  // --mutant (tests only): every backend draws this deliberately wrong
+  // variant (shaders/shader_variant.h), so a test can time a broken mode.
+  shaders::Mutant mutant = shaders::Mutant::None;
   // The combination backend and driver select: its suffix names every
   // benchmark, and a slow driver (softpipe) runs the scaled-down set.
   const backends::BackendCombination* combination = nullptr;

@@ -104,6 +104,7 @@ int runFrameBenchmarks(int argc, char** argv) {
   run->settings = flags.settings;
   if (!run->settings.combination->driver.empty())  // a backend with a driver choice (GL): the driver asked for
     run->options.driver = run->settings.driver;
+  run->options.variant.mutant = run->settings.mutant;  // None unless a test asks
   run->flopsPerPixelLight = flopsPerPixelLight();
 
   run->entry = backends::findBuiltBackendEntry(run->settings.backend);
@@ -144,6 +145,8 @@ int runFrameBenchmarks(int argc, char** argv) {
   benchmark::AddCustomContext("frame_bench.error",
                               "against the --ideal reference over its compared pixels; PSNR peak = max of the "
                               "ideal RGB; perceptual: compare_Yee, 100 cd/m2, 45 deg field of view");
+  if (run->settings.mutant != shaders::Mutant::None)
+    benchmark::AddCustomContext("frame_bench.mutant", std::string(shaders::mutantName(run->settings.mutant)));
   if (run->settings.peakGflops)
     benchmark::AddCustomContext("frame_bench.peak_gflops", std::to_string(*run->settings.peakGflops));
 

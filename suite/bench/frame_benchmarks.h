@@ -15,6 +15,8 @@ namespace bench {
 //   --quick                             fewer points and repetitions (the ctest smoke test)
 //   --scenes=DIR                        suite scenes (default: the source tree's suite/scenes)
 //   --suite_scenes                      also time every suite scene (frame kind)
+//   --mutant=NAME                       tests only: draw that mutant (shaders/shader_variant.h),
+//                                        a broken image to time (bench.broken-smoke)
 // Every other argument goes to Google Benchmark (--benchmark_out=FILE,
 // --benchmark_out_format=json, --benchmark_filter=...). One combination
 // per process: Mesa loads one driver per process.

@@ -30,6 +30,9 @@ void setErrorCounters(benchmark::State& state, const ImageError& e) {
   c["err_max_abs"] = e.maxAbs;
   c["err_psnr_db"] = e.psnrDb;
   c["err_perceptual_fail"] = e.perceptualFail;
+  // NaN or infinite pixels: the mode is broken; err_max_abs is infinite and
+  // err_rmse, err_psnr_db NaN, which the JSON writes as null.
+  c["err_nonfinite_pixels"] = double(e.nonFinitePixels);
 }
 
 void setBakeCounters(benchmark::State& state, const BenchFrame& bench) {

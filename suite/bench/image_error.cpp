@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -23,22 +24,36 @@ ImageError compareToIdeal(const imaging::Image& image, const imaging::Image& ide
     for (int x = 0; x < w; ++x) {
       const bool compared = ideal.at(x, y, 3) > 0.5f;
       const std::size_t k = (std::size_t(y) * w + x) * 3;
+      bool finite = true;
       for (int c = 0; c < 3; ++c) {
-        const double want = ideal.at(x, y, c), got = image.at(x, y, c);
-        a[k + c] = float(want);
-        b[k + c] = compared ? float(got) : float(want);
-        if (!compared) continue;
-        const double d = got - want;
+        const float want = ideal.at(x, y, c);
+        if (compared && !std::isfinite(want))
+          throw std::runtime_error("compareToIdeal: the reference has a non-finite value at a compared pixel");
+        finite = finite && std::isfinite(image.at(x, y, c));
+        a[k + c] = want;
+      }
+      // A non-finite pixel gets the ideal value for compare_Yee (it would
+      // spread to its neighbours) and is counted as failing below.
+      for (int c = 0; c < 3; ++c) b[k + c] = compared && finite ? image.at(x, y, c) : a[k + c];
+      if (!compared) continue;
+      ++error.comparedPixels;
+      if (!finite) ++error.nonFinitePixels;
+      for (int c = 0; c < 3; ++c) {
+        const double want = a[k + c], d = finite ? double(image.at(x, y, c)) - want : 0.0;
         sumSquares += d * d;
         error.maxAbs = std::max(error.maxAbs, std::abs(d));
         error.peak = std::max(error.peak, want);
       }
-      error.comparedPixels += compared ? 1 : 0;
     }
   }
   if (error.comparedPixels == 0) return error;
-  error.rmse = std::sqrt(sumSquares / (3.0 * double(error.comparedPixels)));
-  error.psnrDb = error.rmse > 0 && error.peak > 0 ? 20.0 * std::log10(error.peak / error.rmse) : kPsnrOfExactMatch;
+  if (error.nonFinitePixels > 0) {
+    error.maxAbs = std::numeric_limits<double>::infinity();
+    error.rmse = error.psnrDb = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    error.rmse = std::sqrt(sumSquares / (3.0 * double(error.comparedPixels)));
+    error.psnrDb = error.rmse > 0 && error.peak > 0 ? 20.0 * std::log10(error.peak / error.rmse) : kPsnrOfExactMatch;
+  }
 
   const OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::FLOAT);
   const OIIO::ImageBuf bufA(spec, a.data()), bufB(spec, b.data());
@@ -46,7 +61,7 @@ ImageError compareToIdeal(const imaging::Image& image, const imaging::Image& ide
   const int failing =
       OIIO::ImageBufAlgo::compare_Yee(bufA, bufB, result, kPerceptualLuminance, kPerceptualFovDeg);
   if (failing < 0) throw std::runtime_error("OpenImageIO compare_Yee failed: " + bufB.geterror());
-  error.perceptualFail = double(failing) / double(error.comparedPixels);
+  error.perceptualFail = double(failing + error.nonFinitePixels) / double(error.comparedPixels);
   return error;
 }
 

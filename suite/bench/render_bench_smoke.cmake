@@ -22,7 +22,7 @@ macro(run_render_bench filter)
 endmacro()
 
 # The counters of a frame benchmark compared with its ideal reference.
-set(error_counters err_rmse err_max_abs err_psnr_db err_perceptual_fail)
+set(error_counters err_rmse err_max_abs err_psnr_db err_perceptual_fail err_nonfinite_pixels)
 
 # Sets `indices` to the entries that are measured runs (not aggregates) and
 # `names` to their names, in order; fails on an entry that reports an error.

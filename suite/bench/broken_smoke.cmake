@@ -1,0 +1,70 @@
+# bench.broken-smoke: render_bench --backend=vulkan --quick --mutant=unclamped-ldr-decode
+# on the 64-light field's deferred-hdr32 and deferred-ldr8 modes. The mutant
+# decodes the ldr8 texels that saturated under the brightest lights to
+# +infinity (shaders/deferred_composite.frag), so deferred-ldr8's image is
+# broken: it must carry err_nonfinite_pixels > 0 with err_max_abs, err_rmse
+# and err_psnr_db null (docs/bench-format.md), in every repetition and
+# aggregate, while deferred-hdr32 (no ldr8 decode) stays finite. The pages
+# (bench_tool report) must list deferred-ldr8 as broken and never draw it as
+# a point of the speed-against-error plot, nor on its Pareto front.
+# -DRENDER_BENCH=<render_bench> -DBENCH_TOOL=<bench_tool> -DOUT=<json file> -DPAGES=<folder>
+include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
+run_render_bench("^frame/vulkan/lights64-1280x720/deferred-(hdr32|ldr8)(/|$)" --mutant=unclamped-ldr-decode)
+measured_entries()
+math(EXPR last "${count} - 1")
+foreach(i RANGE ${last})
+  string(JSON name GET "${json}" benchmarks ${i} run_name)
+  string(JSON runType GET "${json}" benchmarks ${i} run_type)
+  set(what "${name} (${runType})")
+  string(JSON aggregate ERROR_VARIABLE noAggregate GET "${json}" benchmarks ${i} aggregate_name)
+  if(noAggregate STREQUAL "NOTFOUND")
+    set(what "${name} (${aggregate})")
+  endif()
+  if(runType STREQUAL "iteration" OR aggregate MATCHES "^(mean|median|min|max)$")
+    require_counters(${i} ${error_counters})
+  else()
+    continue()  # stddev and cv: spreads, not errors
+  endif()
+  string(JSON pixels GET "${json}" benchmarks ${i} err_nonfinite_pixels)
+  if(name MATCHES "/deferred-ldr8$")
+    if(NOT pixels GREATER 0)
+      message(FATAL_ERROR "${what}: err_nonfinite_pixels ${pixels}: the mutant's +infinity pixels are not counted")
+    endif()
+    foreach(counter err_max_abs err_rmse err_psnr_db)
+      string(JSON type TYPE "${json}" benchmarks ${i} ${counter})
+      if(NOT type STREQUAL "NULL")
+        string(JSON value GET "${json}" benchmarks ${i} ${counter})
+        message(FATAL_ERROR "${what}: ${counter} is ${value}, not null, for a broken image")
+      endif()
+    endforeach()
+  else()
+    string(JSON rmse GET "${json}" benchmarks ${i} err_rmse)
+    if(NOT pixels EQUAL 0 OR NOT rmse GREATER 0)
+      message(FATAL_ERROR "${what}: err_nonfinite_pixels ${pixels}, err_rmse ${rmse}: want 0 and a finite error")
+    endif()
+  endif()
+endforeach()
+require_distinct("${names}" 2 "deferred-hdr32 and deferred-ldr8")
+
+# The pages of that file.
+file(REMOVE_RECURSE "${PAGES}")
+execute_process(COMMAND "${BENCH_TOOL}" report "${OUT}" "${PAGES}" RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "bench_tool report exited with ${status}")
+endif()
+foreach(page index.html vulkan.html)
+  file(READ "${PAGES}/${page}" html)
+  string(FIND "${html}" "data-point=\"vulkan/deferred-hdr32\"" hdr32)
+  string(FIND "${html}" "data-point=\"vulkan/deferred-ldr8\"" ldr8)
+  string(FIND "${html}" "deferred-ldr8 <span class=\"err\">broken" broken)
+  if(hdr32 EQUAL -1)
+    message(FATAL_ERROR "${page}: deferred-hdr32 is not a point of the speed-against-error plot")
+  endif()
+  if(NOT ldr8 EQUAL -1)
+    message(FATAL_ERROR "${page}: the broken deferred-ldr8 is drawn as a point")
+  endif()
+  if(broken EQUAL -1)
+    message(FATAL_ERROR "${page}: deferred-ldr8 is not listed as broken")
+  endif()
+endforeach()
+message("ok: ${names}; deferred-ldr8 broken, off the front")
