@@ -2,32 +2,66 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
+#include "backends/backend_combinations.h"
+#include "backends/gl/probe_in_child.h"
 
 #include <ostream>
 
 namespace app {
+namespace {
 
-int runBackendsCommand(std::ostream& out, std::ostream& err) {
+// The drivers `lightcts backends` probes on `backend`: those of its
+// combinations (one empty driver for Vulkan), or the one --driver names on a
+// backend that has drivers.
+std::vector<std::string> driversToProbe(const std::string& backend, const std::string& driver) {
+  std::vector<std::string> tableDrivers;
+  for (const backends::BackendCombination& combination : backends::backendCombinations())
+    if (combination.backend == backend) tableDrivers.push_back(combination.driver);
+  const bool hasDrivers = !tableDrivers.empty() && !tableDrivers.front().empty();
+  if (driver.empty()) return hasDrivers ? tableDrivers : std::vector<std::string>{""};
+  if (!hasDrivers) return {};
+  return {driver};
+}
+
+}  // namespace
+
+int runBackendsCommand(std::ostream& out, std::ostream& err) { return runBackendsCommand("", out, err); }
+
+int runBackendsCommand(const std::string& driver, std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
+    bool found = false;
     for (const std::string& name : backends::specBackendNames()) {
+      const std::vector<std::string> drivers = driversToProbe(name, driver);
+      if (drivers.empty()) continue;  // --driver: a backend without drivers (Vulkan)
       const backends::BackendEntry* entry = backends::findBuiltBackendEntry(name);
       if (!entry) {
         out << name << ": not built (NotSupported)\n";
         continue;
       }
-      std::vector<backends::DeviceInfo> devices;
-      try {
-        devices = entry->listDevices({});
-      } catch (const backends::NotSupportedError& e) {
-        out << name << ": " << e.what() << " (NotSupported)\n";
-        continue;
+      for (const std::string& d : drivers) {
+        const std::string label = d.empty() ? name : name + " [--driver " + d + "]";
+        backends::BackendOptions options;
+        options.driver = d;
+        std::vector<backends::DeviceInfo> devices;
+        try {
+          devices = entry->listDevices(options);
+        } catch (const backends::gl::ProbeTimeoutError& e) {
+          out << label << ": " << e.what() << " (Timeout)\n";
+          continue;
+        } catch (const backends::NotSupportedError& e) {
+          out << label << ": " << e.what() << " (NotSupported)\n";
+          continue;
+        }
+        if (devices.empty()) out << label << ": no device (NotSupported)\n";
+        found = found || !devices.empty();
+        for (const backends::DeviceInfo& device : devices)
+          out << name << " [" << device.selectedBy << "] " << device.name << ", driver " << device.driver
+              << ", driver version " << device.driverVersion << ", API " << device.apiVersion << "\n";
       }
-      if (devices.empty()) out << name << ": no device (NotSupported)\n";
-      for (std::size_t i = 0; i < devices.size(); ++i)
-        out << name << " [" << devices[i].selectedBy << "] " << devices[i].name << ", driver " << devices[i].driver << ", driver version "
-            << devices[i].driverVersion << ", API " << devices[i].apiVersion << "\n";
     }
-    return kExitSuccess;
+    // Without --driver the listing is the answer; with it, whether that
+    // driver came up anywhere.
+    return driver.empty() || found ? kExitSuccess : kExitNotSupported;
   });
 }
 

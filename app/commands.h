@@ -20,6 +20,13 @@ struct SceneArguments {
 };
 
 int runBackendsCommand(std::ostream& out, std::ostream& err);
+// `lightcts backends --driver NAME`: only that Mesa driver, on each GL
+// backend; exit 3 when it comes up on none (docs/cli.md).
+int runBackendsCommand(const std::string& driver, std::ostream& out, std::ostream& err);
+// The hidden `lightcts probe-driver` that `backends` starts per GL driver
+// (backends/gl/probe_in_child.h).
+int runProbeDriverCommand(const std::string& backend, const std::string& driver, std::ostream& out,
+                          std::ostream& err);
 int runLightsCommand(const SceneArguments& args, std::ostream& out, std::ostream& err);
 int runReferenceCommand(const SceneArguments& args, bool ideal, const std::string& outDir,
                         std::ostream& out, std::ostream& err);
@@ -46,6 +53,12 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
 // `run` checks its options (unknown backend or mutant, bad scene: exit 2)
 // before any worker starts.
 int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::ostream& err);
+// `lightcts run compare OLD NEW [--out DIR]` (issue 16): regressions, fixes,
+// new and removed tests, tightness beyond 2x; DIR/index.html when `outDir` is
+// not empty. 0 no regression, 1 a regression, 2 a file missing, unreadable or
+// not a lightcts results.json (nothing written).
+int runRunCompareCommand(const std::string& oldFile, const std::string& newFile, const std::string& outDir,
+                         std::ostream& out, std::ostream& err);
 // `lightcts bench` (docs/bench-format.md) and `lightcts bench compare BEFORE AFTER`.
 int runBenchCommand(const runner::BenchOptions& options, std::ostream& out, std::ostream& err);
 int runBenchCompareCommand(const std::string& before, const std::string& after, std::ostream& out,

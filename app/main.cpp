@@ -3,6 +3,7 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "backends/backend_combinations.h"
+#include "backends/gl/gl_context.h"
 
 #include <CLI/CLI.hpp>
 
@@ -30,11 +31,17 @@ int main(int argc, char** argv) {
     sub->add_option("--scene", scene.scenePath, "Scene file (SPEC 2)")->required();
     if (withFrame) sub->add_option("--frame", scene.frame, "Frame of an animated scene, from 0")->default_val(0);
   };
+  // Any Gallium driver's name (docs/cli.md); anything else is a usage error.
+  const CLI::Validator mesaDriverName(
+      [](std::string& name) {
+        return backends::gl::validMesaDriverName(name) ? std::string() : "not a Mesa driver name: [a-z0-9_]+";
+      },
+      "DRIVER");
   auto addBackend = [&](CLI::App* sub) {
     sub->add_option("--backend", backend.backend, "vulkan | gl-egl | gl-osmesa")->required();
     sub->add_option("--device", backend.device, "Device index or name substring");
-    sub->add_option("--driver", backend.driver, "GL backends: llvmpipe | softpipe")
-        ->check(CLI::IsMember({"llvmpipe", "softpipe"}));
+    sub->add_option("--driver", backend.driver, "GL backends: a Mesa Gallium driver (llvmpipe, softpipe, zink, ...)")
+        ->check(mesaDriverName);
     // Test-only (docs/cli.md): never needed to run the suite as shipped.
     sub->add_option("--mutant", backend.mutant, "Test only: a deliberately wrong variant of the model")
         ->default_val("none");
@@ -44,6 +51,15 @@ int main(int argc, char** argv) {
   };
 
   auto* backendsCmd = cli.add_subcommand("backends", "List backends, drivers and devices");
+  std::string backendsDriver;
+  backendsCmd->add_option("--driver", backendsDriver, "Probe only this Mesa driver on the GL backends")
+      ->check(mesaDriverName);
+  // Started by `backends` only: one GL driver's probe (backends/gl/probe_in_child.h).
+  auto* probeDriverCmd = cli.add_subcommand("probe-driver", "");
+  probeDriverCmd->group("");
+  std::string probeBackend, probeDriver;
+  probeDriverCmd->add_option("--backend", probeBackend)->required();
+  probeDriverCmd->add_option("--driver", probeDriver)->required();
   auto* lightsCmd = cli.add_subcommand("lights", "Print the light selection as JSON (SPEC 5.4)");
   addScene(lightsCmd, true);
   auto* referenceCmd = cli.add_subcommand("reference", "Write reference, tolerance and mask images (EXR)");
@@ -66,7 +82,8 @@ int main(int argc, char** argv) {
                          backends::combinationSuffixList() + " (default: every one present)");
   runCmd->add_option("--scenes", run.scenesDir, "Scene folder: <group>/<name>.json, or one group's folder")
       ->default_val("suite/scenes");
-  runCmd->add_option("--out", run.outDir, "Output folder")->required();
+  // Not ->required(): CLI11 would demand it of `run compare` too; checked below.
+  runCmd->add_option("--out", run.outDir, "Output folder (required)");
   runCmd->add_option("--device", run.device, "Device index or name substring, for every backend");
   runCmd->add_option("--expect-driver", run.expectDriver,
                      "Every backend's device name, driver or version must contain this text (docs/vendors.md)");
@@ -74,9 +91,21 @@ int main(int argc, char** argv) {
                      "Baseline of known failures, 'test,Status  # reason' lines (docs/vendors.md)");
   runCmd->add_option("--timeout", run.timeoutSeconds, "Seconds one test may take before it is a Timeout")
       ->default_val(120);
+  runCmd->add_option("--flake-retries", run.flakeRetries,
+                     "Re-runs, in a fresh worker, of a test that failed, crashed or timed out (0: none)")
+      ->default_val(1)
+      ->check(CLI::NonNegativeNumber);
+  runCmd->add_flag("--flakes-fail", run.flakesFail, "A Flake (failed, then passed on a retry) fails the run");
   runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
   runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
+  // `lightcts run compare OLD NEW [--out DIR]` (issue 16, docs/cli.md).
+  std::vector<std::string> runCompareFiles;
+  std::string runCompareOut;
+  auto* runCompareCmd = runCmd->add_subcommand(
+      "compare", "Compare two runs: regressions, fixes, new and removed tests, tightness beyond 2x");
+  runCompareCmd->add_option("files", runCompareFiles, "OLD/results.json NEW/results.json")->required()->expected(2);
+  runCompareCmd->add_option("--out", runCompareOut, "Folder for the comparison page, index.html");
   app::BakeArguments bake;
   auto* bakeCmd = cli.add_subcommand("bake", "Bake lightmaps and shadow masks; write them with overlap maps and bake.json");
   bakeCmd->add_option("--scene", bake.scenePath, "Scene file (SPEC 2)")->required();
@@ -112,13 +141,26 @@ int main(int argc, char** argv) {
 
   auto& o = std::cout;
   auto& e = std::cerr;
-  if (*backendsCmd) return app::runBackendsCommand(o, e);
+  if (*backendsCmd) return app::runBackendsCommand(backendsDriver, o, e);
+  if (*probeDriverCmd) return app::runProbeDriverCommand(probeBackend, probeDriver, o, e);
   if (*lightsCmd) return app::runLightsCommand(scene, o, e);
   if (*referenceCmd) return app::runReferenceCommand(scene, ideal, out, o, e);
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
   scene.frameGiven = compareCmd->get_option("--frame")->count() > 0;
   if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);
   if (*bakeCmd) return app::runBakeCommand(bake, o, e);
+  if (*runCompareCmd) {
+    for (const CLI::Option* option : runCmd->get_options())
+      if (option->count() > 0) {
+        e << "lightcts: run compare: " << option->get_name() << " is an option of run, not of run compare\n";
+        return app::kExitBadInput;
+      }
+    return app::runRunCompareCommand(runCompareFiles[0], runCompareFiles[1], runCompareOut, o, e);
+  }
+  if (*runCmd && run.outDir.empty()) {
+    e << "lightcts: run: --out is required\n";
+    return app::kExitBadInput;
+  }
   if (*runCmd) {
     run.workerExecutable = "/proc/self/exe";
     for (int i = 0; i < argc; ++i) run.commandLine += (i ? " " : "") + std::string(argv[i]);

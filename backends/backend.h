@@ -45,7 +45,7 @@ struct DeviceInfo {
 
 struct BackendOptions {
   std::string device;  // --device: index or name substring; empty for the default
-  std::string driver;  // --driver (GL backends): llvmpipe | softpipe
+  std::string driver;  // --driver (GL backends): a Mesa Gallium driver name, "" for llvmpipe (gl/mesa_driver.cpp)
   shaders::ShaderVariant variant;
   // Enable the API's validation (VK_LAYER_KHRONOS_validation) and turn any
   // message into a DriverError. On in debug builds and when the environment

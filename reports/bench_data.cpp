@@ -156,6 +156,7 @@ void addBenchmarks(BenchSet& set, const Json& benchmarks, const std::string& sec
     if (name.full.empty()) continue;
     const double unit = msPerUnit(textField(entry, "time_unit"));
     const std::optional<double> realTime = numberField(entry, "real_time");
+    const std::optional<double> cpuTime = numberField(entry, "cpu_time");
 
     if (aggregate == "BigO" || aggregate == "RMS") {
       auto fit = std::find_if(set.fits.begin(), set.fits.end(),
@@ -184,9 +185,11 @@ void addBenchmarks(BenchSet& set, const Json& benchmarks, const std::string& sec
     }
     if (aggregate.empty()) {
       if (realTime) p.entry.repetitionsMs.push_back(*realTime * unit);
+      if (cpuTime) p.entry.cpuRepetitionsMs.push_back(*cpuTime * unit);
       collectCounters(entry, p.repetitionCounters);
     } else if (aggregate == "median") {
       if (realTime) p.entry.medianMs = *realTime * unit, p.entry.medianFromAggregate = true;
+      if (cpuTime) p.entry.cpuMedianMs = *cpuTime * unit;
       std::map<std::string, std::vector<double>> counters;
       collectCounters(entry, counters);
       for (const auto& [key, values] : counters) p.medianCounters[key] = values.front();
@@ -196,6 +199,8 @@ void addBenchmarks(BenchSet& set, const Json& benchmarks, const std::string& sec
       if (realTime) p.entry.meanMs = *realTime * unit;
     } else if (aggregate == "stddev") {
       if (realTime) p.entry.stddevMs = *realTime * unit;
+    } else if (aggregate == "cv") {  // aggregate_unit "percentage": a fraction, no time unit
+      if (realTime) p.entry.cv = *realTime;
     } else if (aggregate == "min") {  // ComputeStatistics("min", ...); the repetitions win when present
       if (realTime) p.entry.minMs = *realTime * unit;
     } else if (aggregate == "max") {
@@ -221,6 +226,9 @@ void addBenchmarks(BenchSet& set, const Json& benchmarks, const std::string& sec
       }
     }
     e.count = !reps.empty() ? int(reps.size()) : p.aggregateRepetitions.value_or(e.medianMs ? 1 : 0);
+    if (!e.cpuMedianMs && !e.cpuRepetitionsMs.empty()) e.cpuMedianMs = median(e.cpuRepetitionsMs);
+    if (e.count < 2) e.cv.reset();
+    else if (!e.cv && e.stddevMs && e.meanMs && *e.meanMs > 0) e.cv = *e.stddevMs / *e.meanMs;
     if (p.haveMedianCounters) {
       e.counters = p.medianCounters;
       for (const auto& [key, values] : p.repetitionCounters)  // counters only the repetitions have

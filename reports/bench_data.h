@@ -35,6 +35,11 @@ struct BenchEntry {
   std::string section;           // the backend of bench.json it came from ("" for prepare / plain files)
   std::vector<double> repetitionsMs;  // real_time of each repetition, in ms, in file order
   std::optional<double> medianMs, meanMs, stddevMs, minMs, maxMs;
+  std::vector<double> cpuRepetitionsMs;  // cpu_time of each repetition, in ms
+  std::optional<double> cpuMedianMs;     // the median aggregate's cpu_time, else the repetitions' median
+  // Coefficient of variation of real_time (0.05 = 5 %): Google Benchmark's
+  // "cv" aggregate, else stddev / mean; nullopt with fewer than 2 repetitions.
+  std::optional<double> cv;
   int count = 0;                 // repetitions (or 1 when only one run)
   bool medianFromAggregate = false;
   std::string error;             // error_message of a run that failed ("" otherwise)

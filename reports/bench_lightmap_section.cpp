@@ -57,6 +57,8 @@ Table<const BenchEntry*> lightmapTable() {
       counterColumn("bake ms", "bake_ms"),
       counterColumn("bake runs", "bake_runs"),
       numberColumn("median frame ms", [](const BenchEntry& e) { return e.medianMs; }),
+      cpuColumn(),
+      cvColumn(),
       counterColumn("err_rmse", "err_rmse"),
       counterColumn("err_max_abs", "err_max_abs"),
       counterColumn("err_psnr_db", "err_psnr_db"),

@@ -74,8 +74,10 @@ Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& on
                    return std::string(isBroken(e) ? "no: broken" : front(e) ? "yes" : "");
                  }),
       numberColumn("median ms", [](const BenchEntry& e) { return e.medianMs; }),
+      cpuColumn(),
       numberColumn("min ms", [](const BenchEntry& e) { return e.minMs; }),
       numberColumn("max ms", [](const BenchEntry& e) { return e.maxMs; }),
+      cvColumn(),
       numberColumn("n", [](const BenchEntry& e) { return std::optional<double>(e.count); }),
       counterColumn("err_rmse", "err_rmse"),
       counterColumn("err_max_abs", "err_max_abs"),
@@ -108,6 +110,7 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
     p.id = backendOf(e) + "/" + e.name.mode;
     p.label = e.name.mode;
     p.highlight = front[i];
+    if (e.count >= 2 && e.minMs && e.maxMs) p.xLow = e.minMs, p.xHigh = e.maxMs;  // the repetitions' spread
     series.add(group, {byBackend ? m.backendIndex(group) : m.modeIndex(group), false, false}, p);
   }
   plot.series.insert(plot.series.begin(), frontLine(te, front));

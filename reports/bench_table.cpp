@@ -36,6 +36,15 @@ EntryColumn markedTextColumn(std::string header, std::function<std::string(const
           }};
 }
 
+EntryColumn cpuColumn() {
+  return numberColumn("CPU ms", [](const BenchEntry& e) { return e.cpuMedianMs; });
+}
+
+EntryColumn cvColumn() {
+  return numberColumn(
+      "CV %", [](const BenchEntry& e) { return e.cv ? std::optional(*e.cv * 100) : std::nullopt; }, 3);
+}
+
 std::optional<std::string> failureOf(const BenchEntry& e) {
   if (!e.error.empty() && !e.medianMs) return e.error;
   return std::nullopt;
@@ -58,14 +67,17 @@ struct NumberColumn {
   std::string header;
   std::function<std::optional<double>(const BenchEntry&)> value;
   int digits = 4;
+  bool withTimes = false;  // shown whenever the median is ("-" in rows without a value)
 };
 
 std::vector<NumberColumn> numberColumns(const Entries& entries) {
   std::vector<NumberColumn> columns = {
       {"median ms", [](const BenchEntry& e) { return e.medianMs; }},
+      {"CPU ms", [](const BenchEntry& e) { return e.cpuMedianMs; }, 4, true},
       {"min ms", [](const BenchEntry& e) { return e.minMs; }},
       {"max ms", [](const BenchEntry& e) { return e.maxMs; }},
       {"stddev ms", [](const BenchEntry& e) { return e.stddevMs; }, 3},
+      {"CV %", [](const BenchEntry& e) { return e.cv ? std::optional(*e.cv * 100) : std::nullopt; }, 3, true},
       {"n", [](const BenchEntry& e) { return e.count ? std::optional<double>(e.count) : std::nullopt; }},
   };
   const std::vector<std::pair<std::string, std::string>> known = {
@@ -86,9 +98,12 @@ std::vector<NumberColumn> numberColumns(const Entries& entries) {
     for (const auto& [key, value] : e->counters)
       if (seen.insert(key).second)
         columns.push_back({key, [key = key](const BenchEntry& x) { return counter(x, key); }});
+  const bool timed =
+      std::any_of(entries.begin(), entries.end(), [](const BenchEntry* e) { return e->medianMs.has_value(); });
   std::vector<NumberColumn> used;
   for (NumberColumn& c : columns)
-    if (std::any_of(entries.begin(), entries.end(), [&](const BenchEntry* e) { return c.value(*e).has_value(); }))
+    if ((c.withTimes && timed) ||
+        std::any_of(entries.begin(), entries.end(), [&](const BenchEntry* e) { return c.value(*e).has_value(); }))
       used.push_back(std::move(c));
   return used;
 }

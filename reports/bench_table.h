@@ -48,6 +48,11 @@ EntryColumn counterColumn(std::string header, const std::string& key);  // numbe
 EntryColumn markedTextColumn(std::string header, std::function<std::string(const BenchEntry&)> text);
 // That mark: "" unless `e` is broken.
 std::string brokenMark(const BenchEntry& e);
+// The spread columns every table of benchmarks has: "CPU ms" (median
+// cpu_time) and "CV %" (coefficient of variation of the real time, in
+// percent; "-" with one repetition).
+EntryColumn cpuColumn();
+EntryColumn cvColumn();
 // The error of a benchmark that has no time (it failed), else nullopt.
 std::optional<std::string> failureOf(const BenchEntry& e);
 

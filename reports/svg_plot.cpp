@@ -87,16 +87,18 @@ const std::string& colour(std::size_t index) {
 std::vector<double> ticks(Scale scale, double low, double high) {
   std::vector<double> out;
   if (scale == Scale::Log10) {
-    const int first = int(std::floor(std::log10(low))), last = int(std::ceil(std::log10(high)));
-    const double decades = std::log10(high / low);
-    const std::vector<double> steps = decades <= 1.2 ? std::vector<double>{1, 1.5, 2, 3, 5, 7}
-                                      : decades <= 2.5 ? std::vector<double>{1, 2, 5}
-                                                       : std::vector<double>{1};
-    for (int e = first; e <= last; ++e)
-      for (double m : steps) {
-        const double v = m * std::pow(10.0, e);
-        if (v >= low * (1 - 1e-12) && v <= high * (1 + 1e-12)) out.push_back(v);
-      }
+    const auto inRange = [&](double v) { return v >= low * (1 - 1e-12) && v <= high * (1 + 1e-12); };
+    // Decades and half-decades: 10^(k/2), k from the half-decade at or below low.
+    for (int k = int(std::floor(2 * std::log10(low))); k <= int(std::ceil(2 * std::log10(high))); ++k) {
+      const double v = std::pow(10.0, k / 2.0);
+      if (inRange(v)) out.push_back(v);
+    }
+    if (out.size() < 3) {  // a narrow range: 2 and 5 times each decade too
+      for (int e = int(std::floor(std::log10(low))); e <= int(std::ceil(std::log10(high))); ++e)
+        for (double m : {2.0, 5.0})
+          if (const double v = m * std::pow(10.0, e); inRange(v)) out.push_back(v);
+      std::sort(out.begin(), out.end());
+    }
   } else if (scale == Scale::Log2) {
     std::vector<double> all;
     for (int e = int(std::floor(std::log2(low))); e <= int(std::ceil(std::log2(high))); ++e) {
@@ -113,8 +115,8 @@ std::vector<double> ticks(Scale scale, double low, double high) {
 std::string tickText(double value) {
   char text[32];
   const double a = std::abs(value);
-  if (a >= 1e6 && a < 1e15) std::snprintf(text, sizeof text, "%gM", value / 1e6);
-  else if (a >= 1e3 && a < 1e6) std::snprintf(text, sizeof text, "%gk", value / 1e3);
+  if (a >= 1e6 && a < 1e15) std::snprintf(text, sizeof text, "%.3gM", value / 1e6);
+  else if (a >= 1e3 && a < 1e6) std::snprintf(text, sizeof text, "%.3gk", value / 1e3);
   else std::snprintf(text, sizeof text, "%.3g", value);
   return text;
 }
@@ -129,6 +131,8 @@ std::string render(const Plot& plot) {
       if (!usable(plot.x.scale, p.x) || !usable(plot.y.scale, p.y)) continue;
       xs.push_back(p.x);
       ys.push_back(p.y);
+      if (p.xLow) xs.push_back(*p.xLow);
+      if (p.xHigh) xs.push_back(*p.xHigh);
       if (p.yLow) ys.push_back(*p.yLow);
       if (p.yHigh) ys.push_back(*p.yHigh);
     }
@@ -204,8 +208,12 @@ std::string render(const Plot& plot) {
     for (const Point* p : shown) {
       const double px = X(p->x), py = Y(p->y);
       if (p->yLow && p->yHigh && usable(plot.y.scale, *p->yLow) && usable(plot.y.scale, *p->yHigh))
-        out << "<line x1=\"" << num(px) << "\" y1=\"" << num(Y(*p->yLow)) << "\" x2=\"" << num(px) << "\" y2=\""
-            << num(Y(*p->yHigh)) << "\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"1\"/>\n";
+        out << "<line class=\"whisker\" x1=\"" << num(px) << "\" y1=\"" << num(Y(*p->yLow)) << "\" x2=\"" << num(px)
+            << "\" y2=\"" << num(Y(*p->yHigh)) << "\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"1\"/>\n";
+      if (p->xLow && p->xHigh && usable(plot.x.scale, *p->xLow) && usable(plot.x.scale, *p->xHigh))
+        out << "<line class=\"whisker\" x1=\"" << num(X(*p->xLow)) << "\" y1=\"" << num(py) << "\" x2=\""
+            << num(X(*p->xHigh)) << "\" y2=\"" << num(py) << "\" stroke=\"" << escapeText(s.colour)
+            << "\" stroke-width=\"1\"/>\n";
       if (s.markers) {
         if (p->highlight)
           out << "<circle cx=\"" << num(px) << "\" cy=\"" << num(py)
@@ -256,9 +264,10 @@ std::string render(const Plot& plot) {
   for (const Series& s : plot.series) {
     if (s.name.empty()) continue;
     const double lx = x1 + 14;
-    out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 18) << "\" y2=\"" << num(ly)
-        << "\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"2\""
-        << (s.dashed ? " stroke-dasharray=\"4 3\"" : "") << "/>";
+    if (s.line)  // a scatter-only series: its marker alone
+      out << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 18) << "\" y2=\""
+          << num(ly) << "\" stroke=\"" << escapeText(s.colour) << "\" stroke-width=\"2\""
+          << (s.dashed ? " stroke-dasharray=\"4 3\"" : "") << "/>";
     if (s.markers)
       out << "<circle cx=\"" << num(lx + 9) << "\" cy=\"" << num(ly) << "\" r=\"3.5\" fill=\""
           << escapeText(s.colour) << "\"/>";

@@ -22,7 +22,8 @@ struct Axis {
 
 struct Point {
   double x = 0, y = 0;
-  std::optional<double> yLow, yHigh;  // a whisker (min and max over repetitions)
+  std::optional<double> yLow, yHigh;  // a vertical whisker (min and max over repetitions)
+  std::optional<double> xLow, xHigh;  // a horizontal whisker (the scatter's time axis)
   std::string label;                  // drawn beside the point ("" for none)
   std::string id;                     // data-point attribute and tooltip
   bool highlight = false;             // drawn with a ring, class "front"
@@ -32,7 +33,7 @@ struct Series {
   std::string name;  // legend entry ("" for none)
   std::string colour;
   std::vector<Point> points;
-  bool line = true;      // connect the points in order
+  bool line = true;      // connect the points in order; false: its legend entry is a marker only
   bool markers = true;
   bool dashed = false;
   bool steps = false;    // connect with horizontal-then-vertical steps
@@ -82,7 +83,11 @@ void sortPointsByX(Plot& plot);
 // Distinct colours, by index (cycling).
 const std::string& colour(std::size_t index);
 
-// Tick positions (in data units) for an axis over [low, high].
+// Tick positions (in data units) for an axis over [low, high], ascending.
+// Log10: every decade and half-decade, 10^(k/2) (0.316, 1, 3.16, 10, ...);
+// when fewer than three of those fall in the range, 2 and 5 times each
+// decade as well. Log2: the powers of two (at most about ten). Linear, and
+// any log axis still left with fewer than two: 1-2-5 steps.
 std::vector<double> ticks(Scale scale, double low, double high);
 // "0.5", "12", "1.5k", "100k", "2M".
 std::string tickText(double value);

@@ -90,15 +90,15 @@ Json abnormalResult(const WorkerTask& task, Verdict verdict, const std::string& 
 
 // Runs the plan in as many workers as it takes: a worker that dies or hangs
 // costs its current test (Crash or Timeout) and a new worker picks up at the
-// next one.
+// next one. The plan and the workers' stderr go to logs/<fileStem>.plan.json
+// and logs/<fileStem>.log (the suffix; <suffix>.retry-N for a retry).
 CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& options, const fs::path& logsDir,
-                                  std::ostream& out) {
+                                  const std::string& fileStem, std::ostream& out) {
   CombinationOutcome outcome;
   const auto start = Clock::now();
-  const std::string suffix = plan.combination.suffix;
-  const fs::path planFile = logsDir / (suffix + ".plan.json");
+  const fs::path planFile = logsDir / (fileStem + ".plan.json");
   imaging::writeFileAtomically(planFile, planToJson(plan).dump(1) + "\n");
-  const fs::path logFile = logsDir / (suffix + ".log");
+  const fs::path logFile = logsDir / (fileStem + ".log");
   fs::remove(logFile);  // the workers append; an earlier run's lines are not this run's
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeoutSeconds * 1000));
 
@@ -209,6 +209,24 @@ Json testRecord(const CatalogueEntry& scene, const std::string& suffix, Json res
   return record;
 }
 
+// Flake detection (docs/results-format.md): an attempt that failed, crashed
+// or timed out, and not as the test's expected-failures line says (a known
+// failure is not retried), is worth another in a fresh worker. An attempt
+// that passes, QualityWarning included, ends the retries.
+bool isFailingAttempt(Verdict raw) { return raw == Verdict::Fail || raw == Verdict::Crash || raw == Verdict::Timeout; }
+
+bool worthRetrying(Verdict raw, const ExpectedFailure* listed) {
+  return isFailingAttempt(raw) && comparison::isRunFailure(applyExpectation(raw, listed));
+}
+
+bool passed(Verdict raw) { return raw == Verdict::Pass || raw == Verdict::QualityWarning; }
+
+// One attempt at a task: the worker's result, and the log of that worker.
+struct Attempt {
+  Json result;
+  std::string log;  // relative to --out: logs/<suffix>.log, logs/<suffix>.retry-N.log
+};
+
 struct MutantOutcome {
   MutantStatus status;
   Json record;
@@ -292,6 +310,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const std::vector<BackendCombination> combinations = selectCombinations(options.backends);
   const std::vector<std::string> mutants = mutantsToRun(options);
   if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
+  if (options.flakeRetries < 0) throw std::invalid_argument("--flake-retries must be 0 or more");
   if (options.mutantsOnly && mutants.empty())
     throw std::invalid_argument("nothing to run: --mutants-only with --no-mutants");
 
@@ -301,11 +320,16 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // Evidence of an earlier run in the same folder would be mistaken for this one's.
   for (const char* stale : {"evidence", "mutants", "report"}) fs::remove_all(outDir / stale);
   for (const char* stale : {"results.json", "junit.xml", "results.csv", "failures.csv"}) fs::remove(outDir / stale);
+  std::vector<fs::path> staleRetryLogs;  // logs/<suffix>.retry-N.*, which this run may not write
+  for (const fs::directory_entry& entry : fs::directory_iterator(logsDir))
+    if (entry.path().filename().string().find(".retry-") != std::string::npos) staleRetryLogs.push_back(entry.path());
+  for (const fs::path& stale : staleRetryLogs) fs::remove(stale);
 
   Json backendsJson = Json::array();
   Json tests = Json::array();
   Json mutantsJson = Json::array();
   bool anyRan = false, allGood = true;
+  std::vector<std::string> flakes;  // "test: Crash, Pass", for the summary
   std::map<std::string, const CatalogueEntry*> sceneOfCase;
   for (const CatalogueEntry& scene : catalogue) sceneOfCase[scene.file.caseName()] = &scene;
 
@@ -319,8 +343,36 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
         plan.tasks.push_back({scene.file.caseName() + "." + combination.suffix, scene.file.path.string(), mutant});
 
     out << "run: " << combination.suffix << ": " << plan.tasks.size() << " test(s)" << std::endl;
-    const CombinationOutcome outcome = runCombination(plan, options, logsDir, out);
+    CombinationOutcome outcome = runCombination(plan, options, logsDir, combination.suffix, out);
     anyRan = anyRan || outcome.status != BackendStatus::NotSupported;  // an error is present, and fails
+
+    // Flake detection: the model's tests that failed, crashed or timed out
+    // run again, just those, in fresh workers, up to --flake-retries times
+    // (mutant tasks are meant to fail and are never retried; nor is a backend
+    // that is NotSupported or an error, whose every test would do the same).
+    std::vector<std::vector<Attempt>> attempts(plan.tasks.size());
+    for (std::size_t i = 0; i < plan.tasks.size(); ++i)
+      attempts[i].push_back({outcome.results[i], "logs/" + combination.suffix + ".log"});
+    for (int retry = 1; retry <= options.flakeRetries && outcome.status == BackendStatus::Ran; ++retry) {
+      WorkerPlan retryPlan = plan;
+      retryPlan.tasks.clear();
+      std::vector<std::size_t> retried;  // plan indices of retryPlan's tasks
+      for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
+        const WorkerTask& task = plan.tasks[i];
+        const Verdict last = rawVerdictOf(attempts[i].back().result);
+        if (task.mutant != "none" || !worthRetrying(last, expected.find(task.test))) continue;
+        retried.push_back(i);
+        retryPlan.tasks.push_back(task);
+      }
+      if (retried.empty()) break;
+      const std::string stem = combination.suffix + ".retry-" + std::to_string(retry);
+      out << "run: " << combination.suffix << ": retry " << retry << " of " << options.flakeRetries << ": "
+          << retried.size() << " test(s) in a fresh worker" << std::endl;
+      const CombinationOutcome again = runCombination(retryPlan, options, logsDir, stem, out);
+      outcome.wallSeconds += again.wallSeconds;
+      for (std::size_t k = 0; k < retried.size(); ++k)
+        attempts[retried[k]].push_back({again.results[k], "logs/" + stem + ".log"});
+    }
 
     std::map<Verdict, int> counted;
     std::map<std::string, std::vector<Json>> mutantResults;
@@ -331,15 +383,35 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
         mutantResults[task.mutant].push_back(outcome.results[i]);
         continue;
       }
-      const Json& result = outcome.results[i];
+      // A test that passed on a retry is a Flake. A retried test's record is
+      // that of its last failing attempt (for a Flake, the failure and its
+      // evidence; a retry that found the backend gone, NotSupported, does not
+      // turn a failure into a skip).
+      const std::vector<Attempt>& tries = attempts[i];
+      const bool flake = tries.size() > 1 && passed(rawVerdictOf(tries.back().result));
+      std::size_t shown = tries.size() - 1;
+      while (shown > 0 && !isFailingAttempt(rawVerdictOf(tries[shown].result))) --shown;
+      const Json& result = tries[shown].result;
       const Verdict raw = rawVerdictOf(result);
-      cleanVerdicts[task.test] = raw;
+      cleanVerdicts[task.test] = rawVerdictOf(tries.back().result);
       const ExpectedFailure* listed = expected.find(result.value("test", ""));
-      const Verdict verdict = applyExpectation(raw, listed);
+      const Verdict verdict = flake ? Verdict::Flake : applyExpectation(raw, listed);
       ++counted[verdict];
-      if (comparison::isRunFailure(verdict)) allGood = false;
-      tests.push_back(testRecord(*sceneOfCase.at(task.test.substr(0, task.test.rfind('.'))), combination.suffix,
-                                 result, listed, verdict));
+      if (comparison::isRunFailure(verdict) || (flake && options.flakesFail)) allGood = false;
+      Json record = testRecord(*sceneOfCase.at(task.test.substr(0, task.test.rfind('.'))), combination.suffix,
+                               result, listed, verdict);
+      if (tries.size() > 1) {  // only a retried test has "attempts"
+        Json list = Json::array();
+        std::string verdicts;
+        for (const Attempt& a : tries) {
+          const std::string said(comparison::verdictName(rawVerdictOf(a.result)));
+          list.push_back({{"raw_verdict", said}, {"message", a.result.value("message", "")}, {"log", a.log}});
+          verdicts += (verdicts.empty() ? "" : ", ") + said;
+        }
+        record["attempts"] = std::move(list);
+        if (flake) flakes.push_back(task.test + ": " + verdicts);
+      }
+      tests.push_back(std::move(record));
     }
     Json mutantCounts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
     for (const std::string& mutant : mutants) {
@@ -392,6 +464,8 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"machine", machineJson()},
                         {"scenes_dir", options.scenesDir},
                         {"timeout_s", options.timeoutSeconds},
+                        {"flake_retries", options.flakeRetries},
+                        {"flakes_fail", options.flakesFail},
                         {"backends", backendsJson},
                         {"tests", tests},
                         {"mutants", mutantsJson},
@@ -402,6 +476,13 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // Last: its presence says the run finished and the other files are complete.
   imaging::writeFileAtomically(outDir / "results.json", results.dump(1) + "\n");
 
+  // Flakes apart: they passed, so the per-backend lines alone would hide them.
+  if (!flakes.empty()) {
+    out << "flaky tests (failed, then passed on a retry in a fresh worker; "
+        << (options.flakesFail ? "--flakes-fail: they fail this run" : "they fail a run only with --flakes-fail")
+        << "):\n";
+    for (const std::string& flake : flakes) out << "  " << flake << "\n";
+  }
   out << "slowest tests:\n";
   for (const auto& [ms, name] : times) out << "  " << formatMs(ms) << "  " << name << "\n";
   out << "run: results in " << (outDir / "results.json").string() << ", report in "

@@ -23,12 +23,18 @@ struct RunOptions {
   bool noMutants = false;             // --no-mutants
   bool mutantsOnly = false;           // --mutants-only: the mutation check alone (ctest -L mutants)
   double timeoutSeconds = 120;        // per test
+  int flakeRetries = 1;               // --flake-retries: re-runs of a failing, crashing or timed-out test
+  bool flakesFail = false;            // --flakes-fail: a Flake fails the run
   std::string workerExecutable;       // the lightcts binary (/proc/self/exe)
   std::string commandLine;            // for results.json
 };
 
-// Exit status: 0 when every test that ran passed (or failed as expected) and
-// every mutant was killed; 1 otherwise; 3 when no backend was present.
+// A test whose raw verdict is Fail, Crash or Timeout, and not as its
+// expected-failures line says, is re-run up to flakeRetries times in a fresh
+// worker; one that then passes is Flake (docs/results-format.md).
+// Exit status: 0 when every test that ran passed (or failed as expected, or
+// was a Flake without flakesFail) and every mutant was killed; 1 otherwise;
+// 3 when no backend was present.
 // Throws std::invalid_argument / lighting::SceneLoadError / std::runtime_error
 // for bad input (the caller maps them to exit 2).
 int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -40,6 +41,19 @@ void testHooks(const std::string& test) {
   if (const char* crash = std::getenv("LIGHTCTS_TEST_CRASH_ON"); crash && test == crash) std::raise(SIGSEGV);
   if (const char* hang = std::getenv("LIGHTCTS_TEST_HANG_ON"); hang && test == hang)
     for (;;) pause();
+  // TEST:MARKER: crash at TEST only while MARKER does not exist, creating it
+  // first, so the test's first attempt crashes and its retry passes (a Flake).
+  if (const char* once = std::getenv("LIGHTCTS_TEST_CRASH_ONCE")) {
+    const std::string spec = once;
+    const std::size_t colon = spec.find(':');
+    if (colon != std::string::npos && test == spec.substr(0, colon)) {
+      const fs::path marker = spec.substr(colon + 1);
+      if (!fs::exists(marker)) {
+        std::ofstream(marker) << "crashed once at " << test << "\n";
+        std::raise(SIGSEGV);
+      }
+    }
+  }
 }
 
 // Metrics over every frame checked: counts summed, errors and tightness the

@@ -38,11 +38,13 @@ WorkerProcess::WorkerProcess(const std::vector<std::string>& argv, const std::st
     throw std::runtime_error(systemError("cannot start a worker"));
   }
   if (pid == 0) {
+    setpgid(0, 0);  // its own process group: a kill reaches whatever the worker started
     dup2(pipeFds[1], STDOUT_FILENO);
     dup2(errFd, STDERR_FILENO);
     execv(args[0], args.data());
     _exit(127);
   }
+  setpgid(pid, pid);  // also here, so that a kill right after the start finds the group
   close(pipeFds[1]);
   close(errFd);
   pid_ = pid;
@@ -90,7 +92,9 @@ WorkerProcess::ReadStatus WorkerProcess::readLine(std::chrono::milliseconds time
 
 std::string WorkerProcess::finish(bool kill) {
   if (pid_ <= 0) return "already finished";
-  if (kill) ::kill(pid_, SIGKILL);
+  // The whole group: a timed-out worker's own children (a driver's helper
+  // processes, a shell) must not outlive it.
+  if (kill) ::kill(-pid_, SIGKILL);
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }

@@ -13,8 +13,8 @@ namespace runner {
 
 class WorkerProcess {
  public:
-  // Starts `argv` (argv[0] is the executable's path) with stdout on a pipe
-  // and stderr appended to `stderrFile`. Throws std::runtime_error when the
+  // Starts `argv` (argv[0] is the executable's path) in a process group of
+  // its own, with stdout on a pipe and stderr appended to `stderrFile`. Throws std::runtime_error when the
   // process cannot start.
   WorkerProcess(const std::vector<std::string>& argv, const std::string& stderrFile);
   ~WorkerProcess();
@@ -27,7 +27,8 @@ class WorkerProcess {
   ReadStatus readLine(std::chrono::milliseconds timeout, std::string& line);
 
   // Waits for the child to end and describes how: "exit status N" or
-  // "killed by signal SIGSEGV (11)". Kills it first when `kill` is true.
+  // "killed by signal SIGSEGV (11)". Kills it first, with its whole process
+  // group, when `kill` is true.
   std::string finish(bool kill);
   int exitStatus() const { return exitStatus_; }  // after finish(); -1 when killed by a signal
 

@@ -91,3 +91,58 @@ add_test(NAME bench.compare-against-itself-finds-no-regression
          COMMAND lightcts bench compare ${bench_out}/bench.json ${bench_out}/bench.json)
 set_tests_properties(bench.compare-against-itself-finds-no-regression PROPERTIES LABELS "bench"
   FIXTURES_REQUIRED bench-quick)
+
+# Flake detection (issue 16): LIGHTCTS_TEST_CRASH_ONCE crashes the worker at
+# one test only while its marker file is absent (the worker creates it first),
+# so the first attempt is a Crash and the retry in a fresh worker passes: the
+# test is Flake, listed apart, and the run passes; with --flakes-fail a Flake
+# fails the run; with --flake-retries 0 nothing is retried and it is a Crash.
+function(add_flake_test name exit_status extra_args verdict regex)
+  add_run_test(${name} ${exit_status} "${vulkan_only};${extra_args}"
+    "LIGHTCTS_TEST_CRASH_ONCE=${one_test}:${run_out}/${name}/crash-once.marker"
+    "${one_test}=${verdict};${neighbour}=Pass" "vulkan=ran" "${regex}")
+endfunction()
+set(flake_listed "flaky tests [^\n]*\n  ${one_test}: Crash, Pass")
+add_flake_test(crash-once-is-flake 0 "" Flake "1 Flake.*${flake_listed}")
+add_flake_test(flakes-fail-fails-the-run 1 "--flakes-fail" Flake "${flake_listed}")
+add_flake_test(flake-retries-0-keeps-the-crash 1 "--flake-retries;0" Crash "1 Crash")
+
+# `lightcts run compare OLD NEW --out DIR` (issue 16): a real run against
+# itself is no change (exit 0); against a copy of it with one verdict edited
+# Pass -> Fail, and against a real run where that test crashed
+# (LIGHTCTS_TEST_CRASH_ON), it names the regression (exit 1); the other way
+# round it is a fix (exit 0). A missing file or one that is not a results.json
+# exits 2 and writes nothing (suite/run_compare_outcome.cmake).
+add_run_test(compare-base 0 "${vulkan_only}" "" "${one_test}=Pass;${neighbour}=Pass" "vulkan=ran" "")
+add_run_test(compare-crash 1 "${vulkan_only}" "LIGHTCTS_TEST_CRASH_ON=${one_test}" "${one_test}=Crash" "vulkan=ran" "")
+set_tests_properties(run.compare-base PROPERTIES FIXTURES_SETUP run-compare-base)
+set_tests_properties(run.compare-crash PROPERTIES FIXTURES_SETUP run-compare-crash)
+set(compare_base ${run_out}/compare-base/results.json)
+set(compare_crash ${run_out}/compare-crash/results.json)
+# name | expected exit | OLD | NEW | test=Verdict edit of NEW, or "" | output regex | fixtures
+function(add_run_compare_test name exit_status old new edit regex fixtures)
+  add_test(NAME run.compare.${name}
+           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DOLD=${old} -DNEW=${new}
+                   -DOUT=${run_out}/compare.${name} -DEXIT=${exit_status} "-DEDIT=${edit}" "-DOUTPUT_REGEX=${regex}"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/run_compare_outcome.cmake)
+  set_tests_properties(run.compare.${name} PROPERTIES LABELS "run;report;vulkan" FIXTURES_REQUIRED "${fixtures}"
+    SKIP_REGULAR_EXPRESSION "NotSupported: no backend")
+endfunction()
+add_run_compare_test(against-itself-is-no-change 0 ${compare_base} ${compare_base} ""
+  "no change" run-compare-base)
+add_run_compare_test(edited-pass-to-fail-is-a-regression 1 ${compare_base} ${compare_base} "${one_test}=Fail"
+  "REGRESSION ${one_test}: Pass -> Fail.1 regression, 0 fixes" run-compare-base)
+add_run_compare_test(crashing-run-is-a-regression 1 ${compare_base} ${compare_crash} ""
+  "REGRESSION ${one_test}: Pass -> Crash.1 regression," "run-compare-base;run-compare-crash")
+add_run_compare_test(crash-to-pass-is-a-fix 0 ${compare_crash} ${compare_base} ""
+  "fix ${one_test}: Crash -> Pass.0 regressions, 1 fix," "run-compare-base;run-compare-crash")
+add_run_compare_test(missing-file-exits-2 2 ${run_out}/no-such-run/results.json ${compare_base} ""
+  "cannot read .*no-such-run/results.json" run-compare-base)
+add_run_compare_test(not-a-results-file-exits-2 2 ${CMAKE_CURRENT_SOURCE_DIR}/bad-scenes/typo-in-range.json
+  ${compare_base} "" "typo-in-range.json: no \"format\": not a lightcts results.json" run-compare-base)
+# `run` has a subcommand now, so its --out is checked by `run` (not the parser):
+# still exit 2 without it, and nothing runs.
+add_test(NAME run.compare.run-without-out-still-exits-2
+         COMMAND sh -c "out=$($<TARGET_FILE:lightcts> run --backend vulkan --scenes '${run_scenes}' --no-mutants 2>&1); \
+                        s=$?; echo \"$out\"; test $s -eq 2 && echo \"$out\" | grep -q 'run: --out is required'")
+set_tests_properties(run.compare.run-without-out-still-exits-2 PROPERTIES LABELS "run;cli")

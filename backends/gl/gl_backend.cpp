@@ -42,7 +42,7 @@ class GlBackend final : public Backend {
     info_.apiVersion = "GLSL " + glString(gl_, GL_SHADING_LANGUAGE_VERSION);
     // Mesa picks its driver once per process; say so rather than run another.
     const std::string wanted = options.device.empty() || !options.driver.empty() ? requestedMesaDriver(options) : "";
-    if (!wanted.empty() && info_.name.find(wanted) == std::string::npos)
+    if (!wanted.empty() && !rendererRunsOn(info_.name, wanted))
       throw NotSupportedError("asked for Mesa's " + wanted + " but the context runs on '" + info_.name +
                               "' (the driver is missing, or another was already loaded in this process)");
     programs_.emplace(gl_);
@@ -203,30 +203,37 @@ class GlBackend final : public Backend {
   bool drawn_ = false;
 };
 
-// `lightcts backends`: each Mesa driver is tried in a child process, since
-// Mesa loads one driver per process.
-// The drivers tried are those of the backend's combinations
-// (backends/backend_combinations.def).
-std::vector<DeviceInfo> listDrivers(const std::string& backend, const ContextFactory& makeContext,
-                                    const BackendOptions& options) {
+// `lightcts backends`: each Mesa driver is tried in a child process
+// (probe_in_child.h), since Mesa loads one driver per process, and with a
+// deadline, since a driver may hang. The drivers tried are those of the
+// backend's combinations (backends/backend_combinations.def), or the one
+// `--driver` names, which may be any Gallium driver.
+std::vector<DeviceInfo> listDrivers(const std::string& backend, const BackendOptions& options) {
+  std::vector<std::string> drivers;
+  if (!options.driver.empty()) {
+    drivers.push_back(options.driver);
+  } else {
+    for (const BackendCombination& combination : backendCombinations())
+      if (combination.backend == backend) drivers.push_back(combination.driver);
+  }
   std::vector<DeviceInfo> devices;
   std::string reasons;
-  for (const BackendCombination& combination : backendCombinations()) {
-    const std::string& driver = combination.driver;
-    if (combination.backend != backend) continue;
-    if (!options.driver.empty() && options.driver != driver) continue;
-    BackendOptions probe = options;
-    probe.driver = driver;
-    const ProbeResult result = probeInChild([&] { return GlBackend(makeContext, probe).device(); });
+  bool allTimedOut = true;
+  for (const std::string& driver : drivers) {
+    if (!validMesaDriverName(driver)) throw NotSupportedError("'" + driver + "' is not a Mesa driver name");
+    const ProbeResult result = probeInChild(backend, driver);
     if (result.device) {
       DeviceInfo info = *result.device;
       info.driver = driver + " (" + info.driver + ")";
       info.selectedBy = "--driver " + driver;
       devices.push_back(info);
     } else {
-      reasons += (reasons.empty() ? "" : "; ") + driver + ": " + result.error;
+      allTimedOut = allTimedOut && result.timedOut;
+      const std::string reason = drivers.size() == 1 ? result.error : driver + ": " + result.error;
+      reasons += (reasons.empty() ? "" : "; ") + reason;
     }
   }
+  if (devices.empty() && allTimedOut && !drivers.empty()) throw ProbeTimeoutError(reasons);
   if (devices.empty()) throw NotSupportedError(reasons);
   return devices;
 }
@@ -234,9 +241,7 @@ std::vector<DeviceInfo> listDrivers(const std::string& backend, const ContextFac
 BackendEntry entryFor(const std::string& name, ContextFactory makeContext) {
   BackendEntry entry;
   entry.name = name;
-  entry.listDevices = [name, makeContext](const BackendOptions& options) {
-    return listDrivers(name, makeContext, options);
-  };
+  entry.listDevices = [name](const BackendOptions& options) { return listDrivers(name, options); };
   entry.create = [makeContext](const BackendOptions& options) -> std::unique_ptr<Backend> {
     return std::make_unique<GlBackend>(makeContext, options);
   };

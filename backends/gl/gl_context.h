@@ -23,8 +23,16 @@ class GlContext {
 // Which Mesa driver (GALLIUM_DRIVER) a GL backend is to run on: `--driver`,
 // llvmpipe when absent. Set before the context is created, since Mesa reads
 // the environment when it loads the driver.
+// Any Gallium driver name ([a-z0-9_]+, validMesaDriverName): llvmpipe,
+// softpipe and zink go through Mesa's software path (LIBGL_ALWAYS_SOFTWARE),
+// any other name is a hardware driver (MESA_LOADER_DRIVER_OVERRIDE).
 std::string requestedMesaDriver(const BackendOptions& options);
+bool validMesaDriverName(const std::string& driver);
 void selectMesaDriver(const std::string& driver);
+// Whether a context whose GL_RENDERER is `renderer` runs on `driver`: the
+// name as a whole word, and for a layered driver (zink, virgl, d3d12) its
+// own name first, so zink over llvmpipe is not llvmpipe.
+bool rendererRunsOn(const std::string& renderer, const std::string& driver);
 
 // EGL: surfaceless platform with Mesa's software driver; with `--device`,
 // the EGL device platform and the device that index or name substring picks.

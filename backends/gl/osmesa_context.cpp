@@ -23,7 +23,14 @@ class OsmesaContext final : public GlContext {
     destroyContext_ = library_.require<void (*)(OSMesaContext)>("OSMesaDestroyContext");
     getProcAddress_ = library_.require<OSMESAproc (*)(const char*)>("OSMesaGetProcAddress");
 
-    selectMesaDriver(requestedMesaDriver(options));
+    // OSMesa draws through Mesa's software winsys, which only the software
+    // rasterizers run on: Mesa 22.3's OSMesa crashes (SIGSEGV) in context
+    // creation when GALLIUM_DRIVER names zink, a hardware driver or no driver.
+    const std::string driver = requestedMesaDriver(options);
+    if (driver != "llvmpipe" && driver != "softpipe")
+      throw NotSupportedError("gl-osmesa runs only on Mesa's software rasterizers (llvmpipe, softpipe), not on '" +
+                              driver + "'; use gl-egl for it");
+    selectMesaDriver(driver);
     const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
                               OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
     context_ = createContext(attributes, nullptr);

@@ -84,6 +84,11 @@ TEST(BenchData, MediansSpreadAndFits) {
   EXPECT_DOUBLE_EQ(*g.minMs, 19.5);
   EXPECT_NEAR(*g.stddevMs, 0.763763, 1e-6);  // sample stddev of 20, 21, 19.5
   EXPECT_FALSE(g.counters.count("device_ms"));
+  // Spread: CPU time and CV. The sample's cpu_time is half its real_time.
+  EXPECT_DOUBLE_EQ(*v.cpuMedianMs, 5.0);   // the median aggregate's
+  EXPECT_DOUBLE_EQ(*v.cv, 0.27 / 10.08);   // stddev / mean aggregates
+  EXPECT_DOUBLE_EQ(*g.cpuMedianMs, 10.0);  // median of 10, 10.5, 9.75
+  EXPECT_NEAR(*g.cv, 0.763763 / (60.5 / 3), 1e-6);
   // Aggregates only: the count is the aggregate's "repetitions".
   const BenchEntry& p = entry(set, "prepare/cpu/curve-lights/all-lights/1000");
   EXPECT_EQ(p.count, 5);
@@ -159,15 +164,18 @@ TEST_F(BenchPages, ParetoPointsAreTheHandDerivedOnes) {
   const std::string firstPlot = index.substr(scatter, index.find("</svg>", scatter) - scatter);
   EXPECT_NE(firstPlot.find("lights64-1280x720: speed against error"), std::string::npos);
   EXPECT_EQ(count(firstPlot, "<circle class=\"pt"), 7) << "one point per (backend, mode)";
+  EXPECT_EQ(count(firstPlot, "<line class=\"whisker\""), 7) << "every point has repetitions: a min-max whisker";
   EXPECT_NE(index.find("data-point=\"vulkan/full-shader\""), std::string::npos);
   EXPECT_NE(index.find("data-point=\"gl-egl/per-object\""), std::string::npos);
   EXPECT_EQ(frontPoints(readFile(dir_ / "vulkan.html")),
             (std::set<std::string>{"vulkan/legacy-4+4", "vulkan/per-object", "vulkan/all-lights"}));
   EXPECT_EQ(frontPoints(readFile(dir_ / "gl-egl.html")),
             (std::set<std::string>{"gl-egl/legacy-4+4", "gl-egl/per-object", "gl-egl/all-lights"}));
-  // The table under the plot: vulkan all-lights is 10 ms / 0.5 ms = 20 times its limit.
+  // The table under the plot: vulkan all-lights is 10 ms / 0.5 ms = 20 times its limit; CPU 5 ms (the
+  // median aggregate's cpu_time); CV = stddev / mean = 0.27 / 10.08 = 2.68 %.
   EXPECT_NE(index.find("<tr class=\"front\"><td>vulkan</td><td>all-lights</td><td>yes</td><td class=\"n\">10</td>"
-                       "<td class=\"n\">9.8</td><td class=\"n\">10.5</td><td class=\"n\">5</td><td class=\"n\">0.0001"
+                       "<td class=\"n\">5</td><td class=\"n\">9.8</td><td class=\"n\">10.5</td>"
+                       "<td class=\"n\">2.68</td><td class=\"n\">5</td><td class=\"n\">0.0001"
                        "</td><td class=\"n\">0.002</td><td class=\"n\">60.5</td><td class=\"n\">20</td></tr>"),
             std::string::npos);
 }
@@ -281,7 +289,8 @@ TEST(BenchReport, ABrokenModeIsListedAsBrokenAndNeverAPoint) {
     const std::size_t ldr8 = page.find(
         "<tr class=\"broken\"><td>vulkan</td><td>deferred-ldr8 <span class=\"err\">broken: 1200 non-finite "
         "pixels</span></td><td>no: broken</td><td class=\"n\">3</td><td class=\"n\">3</td><td class=\"n\">3</td>"
-        "<td class=\"n\">1</td><td class=\"n\">-</td><td class=\"n\">-</td><td class=\"n\">-</td>");
+        "<td class=\"n\">3</td><td class=\"n\">-</td><td class=\"n\">1</td><td class=\"n\">-</td>"
+        "<td class=\"n\">-</td><td class=\"n\">-</td>");
     ASSERT_NE(hdr32, std::string::npos);
     ASSERT_NE(hdr16, std::string::npos);
     ASSERT_NE(ldr8, std::string::npos);
@@ -299,6 +308,48 @@ TEST(BenchReport, ABrokenModeIsListedAsBrokenAndNeverAPoint) {
             std::string::npos);
   EXPECT_NE(vulkan.find("<th>err_nonfinite_pixels</th>"), std::string::npos);
   EXPECT_NE(vulkan.find("<tr><td>frame/vulkan/lights64-1280x720/all-lights</td>"), std::string::npos);
+}
+
+// A tiny bench.json: a, three repetitions (real 8, 10, 12 ms; CPU 3, 4, 7);
+// b, one repetition; c, Google Benchmark's median and cv aggregates only.
+nlohmann::ordered_json spreadBench() {
+  using Json = nlohmann::ordered_json;
+  const auto run = [](const std::string& name, double real, double cpu) {
+    return Json{{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"iterations", 10},
+                {"real_time", real}, {"cpu_time", cpu}, {"time_unit", "ms"}};
+  };
+  const auto aggregate = [](const std::string& which, double real, double cpu, const char* unit) {
+    return Json{{"name", "pipeline/vulkan/s/c_" + which}, {"run_name", "pipeline/vulkan/s/c"},
+                {"run_type", "aggregate"}, {"aggregate_name", which}, {"aggregate_unit", unit},
+                {"repetitions", 4}, {"real_time", real}, {"cpu_time", cpu}, {"time_unit", "us"}};
+  };
+  const Json benchmarks = {run("pipeline/vulkan/s/a", 8, 3), run("pipeline/vulkan/s/a", 12, 7),
+                           run("pipeline/vulkan/s/a", 10, 4), run("pipeline/vulkan/s/b", 5, 2),
+                           aggregate("median", 4000, 1000, "time"), aggregate("cv", 0.125, 0.5, "percentage")};
+  return {{"format", "lightcts-bench"},
+          {"backends", Json::array({{{"backend", "vulkan"}, {"status", "ran"}, {"benchmarks", benchmarks}}})}};
+}
+
+TEST(BenchReport, TablesHaveCpuTimeAndCoefficientOfVariation) {
+  const std::string page = benchBackendHtml(spreadBench(), "vulkan");
+  EXPECT_NE(page.find("<tr><th>benchmark</th><th>median ms</th><th>CPU ms</th><th>min ms</th><th>max ms</th>"
+                      "<th>stddev ms</th><th>CV %</th><th>n</th></tr>"),
+            std::string::npos);
+  // a: median 10, CPU median 4; mean 10, sample stddev sqrt((4 + 0 + 4) / 2) = 2, CV 2 / 10 = 20 %.
+  EXPECT_NE(page.find("<tr><td>pipeline/vulkan/s/a</td><td class=\"n\">10</td><td class=\"n\">4</td>"
+                      "<td class=\"n\">8</td><td class=\"n\">12</td><td class=\"n\">2</td>"
+                      "<td class=\"n\">20</td><td class=\"n\">3</td></tr>"),
+            std::string::npos);
+  // b: one repetition, no stddev nor CV.
+  EXPECT_NE(page.find("<tr><td>pipeline/vulkan/s/b</td><td class=\"n\">5</td><td class=\"n\">2</td>"
+                      "<td class=\"n\">5</td><td class=\"n\">5</td><td class=\"n\">-</td>"
+                      "<td class=\"n\">-</td><td class=\"n\">1</td></tr>"),
+            std::string::npos);
+  // c: 4000 us = 4 ms, CPU 1 ms; the cv aggregate 0.125 (a fraction, not microseconds) is 12.5 %.
+  EXPECT_NE(page.find("<tr><td>pipeline/vulkan/s/c</td><td class=\"n\">4</td><td class=\"n\">1</td>"
+                      "<td class=\"n\">-</td><td class=\"n\">-</td><td class=\"n\">-</td>"
+                      "<td class=\"n\">12.5</td><td class=\"n\">4</td></tr>"),
+            std::string::npos);
 }
 
 TEST(BenchReport, EmptyBenchStillWritesPages) {

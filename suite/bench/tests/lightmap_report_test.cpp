@@ -53,8 +53,11 @@ TEST(LightmapReport, SectionPlotsAndTablesEveryResolutionWithTheRealtimeRow) {
     const std::string s = section(page);
     ASSERT_FALSE(s.empty());
     EXPECT_EQ(count(s, "<svg"), 2u);  // error and time against N
+    // N, bake ms, bake runs, frame ms, CPU ms (cpu_time is 11 too), CV ("-":
+    // one repetition has no spread), then the errors.
     EXPECT_NE(s.find("<td>lightmap-16</td><td class=\"n\">16</td><td class=\"n\">0.25</td><td class=\"n\">5</td>"
-                     "<td class=\"n\">11</td><td class=\"n\">0.11</td><td class=\"n\">3.2</td>"),
+                     "<td class=\"n\">11</td><td class=\"n\">11</td><td class=\"n\">-</td>"
+                     "<td class=\"n\">0.11</td><td class=\"n\">3.2</td>"),
               std::string::npos);
     EXPECT_NE(s.find("<td>lightmap-64</td><td class=\"n\">64</td><td class=\"n\">12.5</td>"), std::string::npos);
     EXPECT_NE(s.find("<td>realtime</td><td class=\"n\">-</td><td class=\"n\">-</td>"), std::string::npos);

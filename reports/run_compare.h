@@ -1,0 +1,77 @@
+// Comparing two runs (`lightcts run compare OLD NEW`, issue 16): what changed
+// from one results.json to the other, per test name, as piglit's summary
+// comparison shows it. Both files are read through result_fields.h (missing or
+// mistyped fields read as empty, never throw) and every verdict through
+// comparison/verdict.h, so a word it does not know counts as a run failure.
+#pragma once
+
+#include "reports/result_fields.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace reports {
+
+struct VerdictChange {
+  std::string test;
+  std::string oldVerdict;
+  std::string newVerdict;
+};
+
+struct ListedTest {
+  std::string test;
+  std::string verdict;
+};
+
+struct TightnessChange {
+  std::string test;
+  double oldTightness = 0;
+  double newTightness = 0;
+};
+
+struct RunComparison {
+  std::size_t oldTests = 0;  // distinct named tests of each run
+  std::size_t newTests = 0;
+  std::vector<VerdictChange> regressions;  // not a run failure before, a run failure now
+  std::vector<VerdictChange> fixes;        // a run failure before, not one now
+  std::vector<VerdictChange> changes;      // any other change of verdict (Pass -> NotSupported, ...)
+  std::vector<ListedTest> added;           // only in the new run
+  std::vector<ListedTest> removed;         // only in the old run
+  std::vector<TightnessChange> tightness;  // both finite, new/old > 2 or < 1/2
+  bool unchanged() const;
+};
+
+// A verdict as results.json spells it counts against the run when
+// comparison::isRunFailure holds for it, or when parseVerdict does not know it
+// (a missing verdict included).
+bool countsAsRunFailure(std::string_view verdict);
+
+// Throws std::invalid_argument unless `results` is an object whose "format" is
+// "lightcts-results" and whose "tests" is an array.
+void checkComparableResults(const Json& results, std::string_view what);
+
+// Tests are matched by "name"; an entry without a name is ignored, and of two
+// with one name the first counts. Lists follow the new run's order of tests
+// (removed ones the old run's). Throws std::invalid_argument as
+// checkComparableResults does.
+RunComparison compareRuns(const Json& oldResults, const Json& newResults);
+
+// The printout: one line per regression, fix, other change, new test, removed
+// test and tightness change, then a summary line; "no change" when unchanged.
+void printRunComparison(const RunComparison& comparison, std::string_view oldLabel, std::string_view newLabel,
+                        std::ostream& out);
+
+// A self-contained HTML page (html_page.h's frame): both runs' metadata, a
+// table of counts and one table per kind of change.
+std::string runComparisonHtml(const RunComparison& comparison, const Json& oldResults, const Json& newResults,
+                              std::string_view oldLabel, std::string_view newLabel);
+// Writes outDir/index.html atomically, creating outDir; returns the file.
+std::filesystem::path writeRunComparisonHtml(const RunComparison& comparison, const Json& oldResults,
+                                             const Json& newResults, std::string_view oldLabel,
+                                             std::string_view newLabel, const std::filesystem::path& outDir);
+
+}  // namespace reports
