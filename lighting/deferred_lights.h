@@ -26,6 +26,13 @@ namespace lighting {
 
 constexpr double kWidestPyramidHalfAngleDeg = 75.0;
 
+// The G-buffer (SPEC 3.7), RGBA32F targets in this order: fragment output
+// location, colour attachment and texture binding i are target i in both
+// backends (shaders/gbuffer.frag writes them, shaders/deferred_data.glsl
+// reads them). Material carries SPEC 3.8's metallic and smoothness.
+enum class GbufferTarget { Albedo = 0, Normal = 1, Base = 2, Mask = 3, Material = 4 };
+constexpr int kGbufferTargetCount = 5;
+
 enum class LightVolumeShape { FullScreen, Icosphere, Pyramid };
 
 // One light pass draw: a triangle list, counter-clockwise seen from outside

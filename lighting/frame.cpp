@@ -38,6 +38,7 @@ ShaderFeatures featuresOf(const Frame& frame) {
   for (int c : frame.prepared->shadowMask.channelOfLight) anyChannel |= c >= 0;
   f.shadowMask = anyMask && anyChannel;
   f.lightmap = anyMask;
+  for (const Object& o : scene.objects) f.specularBrdf |= o.brdf == Brdf::Srp;
   return f;
 }
 

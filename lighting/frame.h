@@ -55,6 +55,7 @@ struct ShaderFeatures {
   bool lightmap = false;       // some object has a lightmap (SPEC 3.6)
   bool ldr8Buffer = false;     // deferred path with the ldr8 light buffer (SPEC 3.7)
   bool ambient = false;
+  bool specularBrdf = false;   // some object has the srp BRDF (SPEC 3.8)
 };
 
 // The lights that shade one object, as scene light indices.

@@ -42,7 +42,9 @@ GpuFrameBlock packFrameBlock(const Frame& frame) {
   GpuFrameBlock block;
   block.viewProjection = mat4(frame.view.cameraRelativeViewProjection());
   block.ambient = vec4(frame.scene().ambient, 0.0);
-  block.cameraPosition = vec4(frame.view.camera.position, 0.0);  // test-only (absolute-coordinates mutant)
+  block.cameraPosition = vec4(frame.view.camera.position, 1.0);  // test-only (the absolute-coordinates mutants)
+  const bool orthographic = frame.view.camera.projection == Projection::Orthographic;
+  block.view = vec4(-frame.view.forward, orthographic ? 1.0 : 0.0);
   const PackedLights& packed = frame.selection.packed;
   const bool legacy = frame.scene().pipeline.profile == Profile::Legacy;
   block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, 0};
@@ -65,6 +67,8 @@ GpuObjectBlock packObjectBlock(const Frame& frame, int object) {
   block.model = mat4(model);
   block.normalMatrix = mat4(glm::dmat4(t.rotation));
   block.albedo = vec4(obj.albedo, 1.0);
+  const bool srp = obj.brdf == Brdf::Srp;
+  block.material = {float(srp ? obj.metallic : 0.0), float(srp ? obj.smoothness : 0.0), srp ? 1.0f : 0.0f, 0.0f};
   const bool hasMap = obj.hasLightmap();
   block.lightList = {0, hasMap ? 1 : 0, hasMap ? 1 : 0, 0};
   auto index = [&block](int k) -> std::int32_t& { return block.lightIndices[k / 4][k % 4]; };

@@ -48,12 +48,17 @@ struct GpuFrameBlock {
   GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind), z: 1 for the legacy profile
   GpuLight directionalLights[kGpuMaxDirectionalLights];
   GpuLight otherLights[kGpuMaxOtherLights];
-  // xyz: the camera position rounded to float; w: unused. The model never
-  // reads it (positions are camera-relative); only the test-only
-  // absolute-coordinates mutant (shaders/mutants.glsl) does.
+  // xyz: the camera position rounded to float; w: 1. The model never reads
+  // it (positions are camera-relative); only the test-only mutants in
+  // absolute coordinates (shaders/mutants.glsl) do, and w = 1 is a factor
+  // the shader compiler cannot know, so it cannot fold (p + c) - c away.
   GpuVec4 cameraPosition;
+  // SPEC 3.8's view vector: xyz the orthographic V (the unit vector opposite
+  // the view direction); w 1 for an orthographic camera, 0 for a perspective
+  // one, whose V is normalize(-p) of the camera-relative p.
+  GpuVec4 view;
 };
-static_assert(sizeof(GpuFrameBlock) == 4464);
+static_assert(sizeof(GpuFrameBlock) == 4480);
 
 // Binding 1: per object.
 struct GpuObjectBlock {
@@ -63,8 +68,9 @@ struct GpuObjectBlock {
   GpuIVec4 lightList;     // x: list count (may exceed 8), y: lightmap present, z: shadow mask present, w: 1 when the list is in use
   GpuIVec4 lightIndices[2];  // the first min(count, 8) packed indices, -1 past the end
   GpuVec4 lightmapTransform; // u = x_local * x + z, v = z_local * y + w (SPEC 3.6)
+  GpuVec4 material;       // x: metallic, y: smoothness, z: 1 for the srp BRDF (SPEC 3.8), 0 Lambert
 };
-static_assert(sizeof(GpuObjectBlock) == 208);
+static_assert(sizeof(GpuObjectBlock) == 224);
 
 // Vertex data: local position and normal, float32, interleaved.
 struct GpuVertex {

@@ -47,11 +47,18 @@ struct Transform {
   double scale = 1;         // uniform only (SPEC 1)
 };
 
+// SPEC 2 `material.brdf`: Lambert (SPEC 3.1-3.2 as written) or the custom
+// pipeline's BRDF (SPEC 3.8), which reads metallic and smoothness.
+enum class Brdf { Lambert, Srp };
+
 struct Object {
   std::string name;
   MeshSpec mesh;
   Transform transform;
   Vec3 albedo{1, 1, 1};
+  Brdf brdf = Brdf::Lambert;
+  double metallic = 0;      // srp only, [0, 1]
+  double smoothness = 0.5;  // srp only, [0, 1]
   bool isStatic = false;
   int lightmapResolution = 0;
 

@@ -167,7 +167,8 @@ constexpr std::array<std::string_view, 3> kPlaneKeys{"type", "size", "subdivisio
 constexpr std::array<std::string_view, 4> kSphereKeys{"type", "radius", "segments", "rings"};
 constexpr std::array<std::string_view, 2> kBoxKeys{"type", "size"};
 constexpr std::array<std::string_view, 3> kTransformKeys{"translate", "rotate_deg", "scale"};
-constexpr std::array<std::string_view, 1> kMaterialKeys{"albedo"};
+constexpr std::array<std::string_view, 4> kMaterialKeys{"albedo", "brdf", "metallic", "smoothness"};
+constexpr std::array<std::string_view, 2> kAlbedoOnly{"albedo", "brdf"};
 constexpr std::array<std::string_view, 13> kLightKeys{
     "name",  "type",      "position", "direction", "range",  "spot_angle_deg",  "inner_spot_angle_deg",
     "color", "intensity", "mode",     "shadows",   "shadow_strength", "bake_falloff"};
@@ -187,6 +188,7 @@ constexpr std::array<Choice<LightMode>, 3> kLightModes{
 constexpr std::array<Choice<BakeFalloff>, 3> kBakeFalloffs{{{"inverse_squared", BakeFalloff::InverseSquared},
                                                             {"inverse_squared_no_range", BakeFalloff::InverseSquaredNoRange},
                                                             {"legacy", BakeFalloff::Legacy}}};
+constexpr std::array<Choice<Brdf>, 2> kBrdfs{{{"lambert", Brdf::Lambert}, {"srp", Brdf::Srp}}};
 constexpr std::array<Choice<Profile>, 2> kProfiles{{{"srp", Profile::Srp}, {"legacy", Profile::Legacy}}};
 constexpr std::array<Choice<RenderPath>, 2> kRenderPaths{
     {{"forward", RenderPath::Forward}, {"deferred", RenderPath::Deferred}}};
@@ -236,6 +238,7 @@ class SceneReader {
     if (auto pipeline = member(root, "pipeline")) scene.pipeline = readPipeline(*pipeline);
     if (auto ambient = member(root, "ambient")) scene.ambient = readVec3(*ambient, atLeast(0));
     scene.objects = readArray(*member(root, "objects"), &SceneReader::readObject);
+    if (scene.pipeline.profile == Profile::Legacy) rejectSrpMaterials(*member(root, "objects"), scene.objects);
     scene.lights = readArray(*member(root, "lights"), &SceneReader::readLight);
     if (auto frames = member(root, "frames")) scene.frames = readFrames(*frames, scene.camera);
     if (auto expect = member(root, "expect")) scene.expect = readExpectation(*expect);
@@ -494,7 +497,7 @@ class SceneReader {
     if (auto name = member(node, "name")) object.name = readString(*name);
     if (auto mesh = member(node, "mesh")) object.mesh = readMesh(*mesh);
     if (auto transform = member(node, "transform")) object.transform = readTransform(*transform);
-    if (auto material = member(node, "material")) object.albedo = readMaterial(*material);
+    if (auto material = member(node, "material")) readMaterial(*material, object);
     if (auto isStatic = member(node, "static")) object.isStatic = readBool(*isStatic);
     if (auto resolution = member(node, "lightmap_resolution")) {
       object.lightmapResolution = readInt(*resolution, 0, kMaxLightmapResolution);
@@ -561,11 +564,31 @@ class SceneReader {
     return scale.x;
   }
 
-  Vec3 readMaterial(const Node& node) const {
+  void readMaterial(const Node& node, Object& object) const {
     expectObject(node);
-    checkKeys(node, kMaterialKeys);
-    if (auto albedo = member(node, "albedo")) return readVec3(*albedo, closed(0, 1));
-    return Object{}.albedo;
+    if (auto brdf = member(node, "brdf")) object.brdf = readChoice(*brdf, kBrdfs);
+    // SPEC 2: metallic and smoothness belong to the srp BRDF; on a Lambert
+    // material they would be silently ignored.
+    if (object.brdf == Brdf::Lambert) {
+      const OtherVariants others{kMaterialKeys, "brdf 'lambert' (metallic and smoothness need \"brdf\": \"srp\")"};
+      checkKeys(node, kAlbedoOnly, &others);
+    } else {
+      checkKeys(node, kMaterialKeys);
+    }
+    if (auto albedo = member(node, "albedo")) object.albedo = readVec3(*albedo, closed(0, 1));
+    if (auto metallic = member(node, "metallic")) object.metallic = readNumber(*metallic, closed(0, 1));
+    if (auto smoothness = member(node, "smoothness")) object.smoothness = readNumber(*smoothness, closed(0, 1));
+  }
+
+  // SPEC 2: the legacy profile (the older chapter) is diffuse only.
+  void rejectSrpMaterials(const Node& objects, const std::vector<Object>& read) const {
+    for (std::size_t i = 0; i < read.size(); ++i) {
+      if (read[i].brdf != Brdf::Srp) continue;
+      const Node object{objects.value[i], objects.pointer + "/" + std::to_string(i)};
+      const Node material = *member(object, "material");
+      fail(*member(material, "brdf"),
+           "brdf 'srp' is not available in the legacy profile (the older forward chapter is diffuse only, SPEC 2)");
+    }
   }
 
   Light readLight(const Node& node, std::size_t index) const {

@@ -1,5 +1,6 @@
 #include "reference/light_evaluation.h"
 
+#include "reference/specular_bound.h"
 #include "reference/tolerance_model.h"
 
 #include <glm/geometric.hpp>
@@ -35,8 +36,26 @@ LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::v
   }
 }
 
+namespace {
+
+// SPEC 3.8: the light's radiance `term` (bound `termBound`) times the lobe in
+// direction L, whose float32 direction error is `lightError`.
+void addSpecular(const LobeAtPoint& lobe, const Vec3& N, const Vec3& L, const VectorError& lightError, const Vec3& term,
+                 const Vec3& termBound, LightSum& sum) {
+  const LobeInputErrors errors{lobe.normalError, lobe.viewError, lightError};
+  const SpecularBound s = specularWithBound(N, lobe.view, L, lobe.smoothness, errors);
+  const Vec3 specular = term * s.value;
+  sum.specular += specular;
+  sum.specularBound += termBound * s.value + term * s.errorBound +
+                       specular * (tol::kSpecularTermSteps * tol::kUnitRoundoff);
+  sum.halfVectorAmbiguous = sum.halfVectorAmbiguous || s.halfVectorAmbiguous;
+}
+
+}  // namespace
+
 void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
-                                const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask) const {
+                                const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask,
+                                const LobeAtPoint* lobe) const {
   const double u = tol::kUnitRoundoff;
   const double pointMagnitude = glm::length(p - where.camera) + where.objectExtent;
   Vec3 absoluteSum(0.0);
@@ -59,8 +78,12 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
       sum.value += term;
       sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
       absoluteSum += term;
-      sum.errorBound += term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
-                        light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
+      const Vec3 termBound = term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
+                             light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
+      sum.errorBound += termBound;
+      // L = float(-direction): one rounding per component, in length and direction.
+      const VectorError uploaded{tol::kNormalizedDirectionSteps * u, tol::kNormalizedDirectionSteps * u};
+      if (lobe) addSpecular(*lobe, N, light.towardLight, uploaded, term, termBound, sum);
       continue;
     }
     // SPEC 3.2.
@@ -100,11 +123,17 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double fromRange = nl * spotAtt * shadowMask / distSqr * 4.0 * g * q * q * distSqrRelError;
     // The mask's filtering error acts on the unmasked term.
     const double fromMask = nl * spotAtt * rangeAtt / distSqr * shadowMaskError;
-    sum.errorBound += light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +
-                      term * maskRounding;
+    const Vec3 termBound = light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +
+                           term * maskRounding;
+    sum.errorBound += termBound;
+    // L = ray * inversesqrt(distSqr): the ray's turn plus the normalisation.
+    const VectorError lightError{tol::kNormalizedLengthSteps * u,
+                                 std::min(2.0, rayError / distance + tol::kNormalizedDirectionSteps * u)};
+    if (lobe) addSpecular(*lobe, N, L, lightError, term, termBound, sum);
   }
   // The running sum rounds once per added term.
   sum.errorBound += absoluteSum * (double(lights.size()) * u);
+  sum.specularBound += sum.specular * (double(lights.size()) * u);
 }
 
 }  // namespace reference

@@ -6,6 +6,7 @@
 #include "lighting/baked_lighting.h"
 #include "lighting/light_math.h"
 #include "lighting/scene.h"
+#include "reference/specular_bound.h"
 
 #include <vector>
 
@@ -14,8 +15,13 @@ namespace reference {
 using lighting::Vec3;
 
 struct LightSum {
-  Vec3 value{0.0};   // sum of finalColor * saturate(dot(N, L)) * attenuation, without albedo
+  Vec3 value{0.0};   // sum of finalColor * saturate(dot(N, L)) * attenuation (the radiance), without albedo
   Vec3 errorBound{0.0};
+  // srp (SPEC 3.8): the sum of radiance * specularStrength, which F0
+  // multiplies (the diffuse colour multiplies `value`), and its bound.
+  Vec3 specular{0.0};
+  Vec3 specularBound{0.0};
+  bool halfVectorAmbiguous = false;  // some light's H is undetermined here (specular_bound.h)
   int evaluations = 0;
   // Per channel, how many terms were > 0: the deferred light buffers round
   // once or twice per light that adds something (deferred_buffers.h).
@@ -39,6 +45,15 @@ struct ShadowMaskAtPoint {
   lighting::Vec4 error{0.0};
 };
 
+// An srp material's specular lobe at the point (SPEC 3.8): the view vector
+// and its float32 error, and the smoothness (roughness = square(1 - s)).
+struct LobeAtPoint {
+  Vec3 view{0.0};
+  VectorError viewError;
+  VectorError normalError;
+  double smoothness = 0.5;
+};
+
 class LightEvaluator {
  public:
   // `weights`: a factor on each scene light's finalColor (the fade weights of
@@ -54,8 +69,10 @@ class LightEvaluator {
   // `mask`: the object's shadow mask at p, or null where there is none (an
   // object without maps, and legacy vertex lights, which the GPU evaluates
   // with a mask of 1): SPEC 3.5's shadowMask is then 1.
+  // `lobe`: an srp material's lobe (adds LightSum::specular), or null (Lambert).
   void accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
-                  const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask = nullptr) const;
+                  const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask = nullptr,
+                  const LobeAtPoint* lobe = nullptr) const;
 
  private:
   struct Prepared {

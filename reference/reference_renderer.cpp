@@ -1,5 +1,6 @@
 #include "reference/reference_renderer.h"
 
+#include "lighting/brdf.h"
 #include "reference/baked_lights_realtime.h"
 #include "reference/deferred_buffers.h"
 #include "reference/light_evaluation.h"
@@ -30,7 +31,7 @@ struct SurfaceKey {
 };
 
 struct Shaded {
-  Vec3 value{0.0};
+  Vec3 value{0.0};  // double, before any rounding
   Vec3 bound{0.0};
   // Against real time only: |bilinear of the texel-centre irradiance - the
   // irradiance here| (RealtimeBakedLights::Sample::interpolation). A GPU
@@ -49,6 +50,7 @@ struct FrameShading {
   std::vector<ObjectLights> lights;       // per object
   std::vector<PositionContext> contexts;  // per object
   std::vector<const ObjectBake*> bakes;   // per object: its maps, or null (SPEC 3.5, 3.6)
+  std::vector<MaterialBrdf> materials;    // per object (SPEC 3.8; Lambert: diffuse = A, no lobe)
   std::optional<RealtimeBakedLights> realtimeBaked;  // ReferenceOptions::bakedLightsRealtime
   std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
   std::vector<Vec3> vertexBound;
@@ -65,6 +67,7 @@ struct FrameShading {
     for (int o = 0; o < int(objects.size()); ++o) {
       lights.push_back(options.ideal ? f.idealLightsForObject() : f.lightsForObject(o));
       bakes.push_back(f.prepared->bakeOf(o));  // throws for a scene that needs a bake it did not get
+      materials.push_back(materialBrdf(f.scene().objects[o]));
       const BoundingSphere& bounds = objects[o].bounds;
       contexts.push_back({f.view.camera.position, glm::length(bounds.centre - f.view.camera.position) + bounds.radius});
     }
@@ -83,6 +86,47 @@ struct FrameShading {
       vertexValue[v] = sum.value;
       vertexBound[v] = sum.errorBound;
     }
+  }
+
+  // SPEC 3.8's V at p, with its float32 error: a camera-relative
+  // implementation normalises -p, off by the position error over |p - camera|
+  // (docs/tolerances.md "Specular lobe"); orthographic V is the uploaded
+  // float(-forward), one rounding per component.
+  LobeAtPoint lobeAt(const Vec3& p, const PositionContext& where, double smoothness) const {
+    const double u = tol::kUnitRoundoff;
+    LobeAtPoint lobe;
+    lobe.view = viewDirection(frame.view, p);
+    lobe.smoothness = smoothness;
+    // The interpolation turns the normal before normalize() does its part.
+    lobe.normalError = {tol::kNormalizedLengthSteps * u,
+                        (tol::kNormalInterpolationSteps + tol::kNormalizedDirectionSteps) * u};
+    if (frame.view.camera.projection == Projection::Orthographic) {
+      lobe.viewError = {tol::kNormalizedDirectionSteps * u, tol::kNormalizedDirectionSteps * u};
+    } else {
+      const double distance = glm::length(p - where.camera);
+      const double positionError =
+          tol::kPositionRoundingSteps * u * (distance + where.objectExtent) + where.reconstructionError;
+      lobe.viewError = {tol::kNormalizedLengthSteps * u,
+                        std::min(2.0, positionError / distance + tol::kNormalizedDirectionSteps * u)};
+    }
+    return lobe;
+  }
+
+  // How far the float32 diffuse colour and F0 of an srp material may be from
+  // SPEC 3.8's (tolerance_model.h); Lambert's A is the albedo the bound
+  // of the combine already counts.
+  struct BrdfColourErrors {
+    Vec3 diffuse{0.0}, specular{0.0};
+  };
+  static BrdfColourErrors brdfColourErrors(const Object& object) {
+    BrdfColourErrors e;
+    if (object.brdf != Brdf::Srp) return e;
+    const double u = tol::kUnitRoundoff, m = object.metallic;
+    const Vec3& A = object.albedo;
+    e.diffuse = A * ((1.0 - kMinReflectivity) * (tol::kDiffuseColourSteps * u * (1.0 - m) + u * m));
+    e.specular = glm::max(A, Vec3(kMinReflectivity)) * (tol::kSpecularColourSteps * u) +
+                 glm::abs(A - Vec3(kMinReflectivity)) * (u * m);
+    return e;
   }
 
   // Clipping range along a ray: view depth in [near, far].
@@ -142,23 +186,31 @@ struct FrameShading {
     const bool deferred = scene.pipeline.path == RenderPath::Deferred;
     PositionContext where = contexts[tri.object];
     if (deferred) where.reconstructionError = reconstructionPositionError(frame.view, p);
+    const MaterialBrdf& brdf = materials[tri.object];
+    std::optional<LobeAtPoint> lobe;
+    if (brdf.lobe) lobe = lobeAt(p, where, scene.objects[tri.object].smoothness);
     LightSum sum;
     evaluator.accumulate(lights[tri.object].perPixel, p, N, where, sum,
-                         bake && !bake->shadowMask.empty() ? &mask : nullptr);
+                         bake && !bake->shadowMask.empty() ? &mask : nullptr, lobe ? &*lobe : nullptr);
     if (!lights[tri.object].perVertex.empty()) {
       sum.value += b0 * vertexValue[tri.vertex[0]] + hit.b1 * vertexValue[tri.vertex[1]] +
                    hit.b2 * vertexValue[tri.vertex[2]];
       sum.errorBound += b0 * vertexBound[tri.vertex[0]] + hit.b1 * vertexBound[tri.vertex[1]] +
                         hit.b2 * vertexBound[tri.vertex[2]];
     }
-    const Vec3& albedo = scene.objects[tri.object].albedo;
-    // SPEC 3: colour = A * ambient + A * lightmap(p) + the light sums.
+    // SPEC 3: colour = A * ambient + A * lightmap(p) + the light sums; SPEC
+    // 3.8 (srp): diffuse for A, and F0 times the sum of the lobes.
+    const Vec3 unlit = scene.ambient + baked;
     Shaded shaded;
-    shaded.value = albedo * (scene.ambient + baked + sum.value);
-    const double combineSteps = tol::kFinalCombineSteps + (bake ? tol::kLightmapAddRoundingSteps : 0.0);
-    shaded.bound = albedo * (sum.errorBound + bakedBound) + glm::abs(shaded.value) * (combineSteps * tol::kUnitRoundoff);
-    if (deferred) applyDeferredBuffer(scene.pipeline.deferredBuffer, albedo, sum, shaded);
-    shaded.interpolation = albedo * interpolation;
+    shaded.value = brdf.diffuse * (unlit + sum.value) + brdf.specular * sum.specular;
+    const double combineSteps = tol::kFinalCombineSteps + (bake ? tol::kLightmapAddRoundingSteps : 0.0) +
+                                (brdf.lobe ? tol::kSpecularTermSteps : 0.0);
+    const BrdfColourErrors colourError = brdfColourErrors(scene.objects[tri.object]);
+    shaded.bound = brdf.diffuse * (sum.errorBound + bakedBound) + brdf.specular * sum.specularBound +
+                   colourError.diffuse * (unlit + sum.value) + colourError.specular * sum.specular +
+                   glm::abs(shaded.value) * (combineSteps * tol::kUnitRoundoff);
+    if (deferred) applyDeferredBuffer(scene.pipeline.deferredBuffer, brdf, sum, shaded);
+    shaded.interpolation = brdf.diffuse * interpolation;
     shaded.evaluations = sum.evaluations;
     return shaded;
   }
@@ -166,19 +218,22 @@ struct FrameShading {
   // SPEC 3.7: the light sum goes through the light buffer. `shaded` holds
   // the forward value and bound; the light part A * sum is replaced by what
   // the buffer decodes to, with the buffer's own error (deferred_buffers.h).
-  static void applyDeferredBuffer(DeferredBuffer buffer, const Vec3& albedo, const LightSum& sum, Shaded& shaded) {
-    const Vec3 light = albedo * sum.value;
+  static void applyDeferredBuffer(DeferredBuffer buffer, const MaterialBrdf& brdf, const LightSum& sum,
+                                  Shaded& shaded) {
+    const Vec3 light = brdf.diffuse * sum.value + brdf.specular * sum.specular;
     // Albedo times each light's term before the blend: one rounding per term.
     shaded.bound += glm::abs(light) * (tol::kDeferredAlbedoProductSteps * tol::kUnitRoundoff);
     for (int c = 0; c < 3; ++c) {
-      // A light adds nothing in a channel whose albedo is 0: exp2(-0) = 1, + 0.
-      const int contributing = albedo[c] > 0 ? int(sum.contributing[c]) : 0;
+      // A light adds nothing in a channel whose diffuse colour and F0 are 0:
+      // exp2(-0) = 1, + 0.
+      const bool adds = brdf.diffuse[c] > 0 || (brdf.lobe && brdf.specular[c] > 0);
+      const int contributing = adds ? int(sum.contributing[c]) : 0;
       if (buffer == DeferredBuffer::Hdr16) shaded.bound[c] += hdr16BlendBound(light[c], contributing);
       if (buffer == DeferredBuffer::Ldr8) {
         shaded.value[c] += decodedLightSum(buffer, light[c]) - light[c];
         // The light sum's arithmetic bound acts inside the encoding: the
         // decode bound carries it (and clamps it at saturation).
-        const double sumBound = albedo[c] * sum.errorBound[c];
+        const double sumBound = brdf.diffuse[c] * sum.errorBound[c] + brdf.specular[c] * sum.specularBound[c];
         shaded.bound[c] += ldr8DecodeBound(light[c], contributing, sumBound) - sumBound;
       }
     }
@@ -224,7 +279,6 @@ ReferenceRenderer::ReferenceRenderer(std::shared_ptr<const PreparedScene> prepar
 ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOptions& options) const {
   const int width = frame.view.width, height = frame.view.height;
   const FrameShading shading(frame, world_, bvh_, options);
-  const double toleranceScale = frame.scene().expect.toleranceScale;
 
   // Pass 1: what each pixel centre sees; pass 2 needs the neighbours' answers
   // to find pixels near a change of surface.
@@ -241,6 +295,7 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
   ReferenceImages out;
   out.value = imaging::Image(width, height, 4);
   out.tolerance = imaging::Image(width, height, 3);
+  if (options.keepExactValues) out.exactValue.assign(std::size_t(width) * height, Vec3(0.0));
   std::atomic<std::int64_t> evaluations{0}, masked{0};
 
   forEachRow(height, options.threads, [&](int j) {
@@ -294,7 +349,8 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
           interpolation = glm::max(interpolation, shifted.interpolation);
         }
       }
-      const Vec3 tolerance = tol::pixelTolerance(value, bound, shiftChange, interpolation, toleranceScale);
+      const Vec3 tolerance = tol::pixelTolerance(value, bound, shiftChange, interpolation);
+      if (options.keepExactValues) out.exactValue[k] = value;
       for (int c = 0; c < 3; ++c) {
         out.value.at(i, j, c) = float(value[c]);
         out.tolerance.at(i, j, c) = float(tolerance[c]);

@@ -11,6 +11,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 namespace reference {
 
@@ -22,6 +25,9 @@ struct ReferenceOptions {
   // (baked_lights_realtime.h). Combines with `ideal`.
   bool bakedLightsRealtime = false;
   int threads = 0;     // 0: every hardware thread
+  // Also return every pixel's double value (ReferenceImages::exactValue), for
+  // tests that check the model to more digits than the float image holds.
+  bool keepExactValues = false;
 };
 
 struct ReferenceImages {
@@ -29,6 +35,9 @@ struct ReferenceImages {
   imaging::Image tolerance;  // RGB
   std::int64_t lightEvaluations = 0;  // pixel-light evaluations, tolerance shading included
   std::int64_t maskedPixels = 0;
+  // keepExactValues only: row-major, row 0 at the top, the double colour of
+  // each pixel before any rounding (background 0); empty otherwise.
+  std::vector<glm::dvec3> exactValue;
 };
 
 // Built once per scene (world triangles and BVH), then renders any frame of it.

@@ -6,12 +6,17 @@
 // A pixel's tolerance is the largest difference a correct float32
 // implementation of SPEC 3 may show against the double-precision value V:
 //
-//   tolerance = tolerance_scale * ( albedo * arithmetic bound of the light sum
-//                                   + albedo * filtering bound of the lightmap
-//                                   + largest change over sub-pixel shifts
-//                                   + albedo * interpolation allowance (against real time)
-//                                   + storage rounding of V
-//                                   + flush-to-zero floor )
+//   tolerance = albedo * arithmetic bound of the light sum
+//               + albedo * filtering bound of the lightmap
+//               + largest change over sub-pixel shifts
+//               + albedo * interpolation allowance (against real time)
+//               + storage rounding of V
+//               + flush-to-zero floor
+//
+// (SPEC 3.8's srp materials: the diffuse colour for the albedo, plus F0 times
+// the bound of the specular lobes, specular_bound.h.) A scene's
+// `tolerance_scale` is not part of it: the comparison applies it
+// (comparison/image_comparison.cpp), once.
 //
 // The bounds of the terms come from the reference (light_evaluation.cpp,
 // lightmap_sampling.cpp, deferred_buffers.cpp, baked_lights_realtime.cpp);
@@ -157,6 +162,43 @@ constexpr double kExp2UlpsPerUnitArgument = 2;
 // 2^-21 absolute for x in [0.5, 2]: at most 3 x 2^-20 absolute.
 constexpr double kLdr8DecodeAbsError = 3 * 0x1p-20;
 
+// --- The specular lobe (SPEC 3.8; docs/tolerances.md "Specular lobe") ---
+
+// fl(normalize(v)) against v / |v|, split along and across v
+// (specular_bound.h): its length is off by dot(v, v) (3u, all terms
+// positive; half of it through the root), inversesqrt (2 ULP = 4u) and the
+// product (u): 6.5u, rounded up to 7; its direction only by the product's
+// rounding of each component, sqrt(3) u < 2u.
+constexpr double kNormalizedLengthSteps = 7;
+constexpr double kNormalizedDirectionSteps = 2;
+
+// dot of two vectors of length <= 1 (three products, two sums), absolute.
+constexpr double kUnitDotRoundingSteps = 3;
+
+// L + V: one rounding per component of a vector of length <= 2.
+constexpr double kVectorAddSteps = 2;
+
+// The interpolated normal before it is normalised: three products and two
+// sums of the perspective-correct barycentric blend, relative to |n| <= 1.
+constexpr double kNormalInterpolationSteps = 3;
+
+// specularStrength's quotient r2 / (d2 * m * k): two products (u each) and a
+// divide (2.5 ULP = 5u), relative.
+constexpr double kLobeQuotientSteps = 7;
+
+// srp: diffuse = A * (0.96 * (1 - metallic)): float(A), float(0.96), 1 - m,
+// two products, relative to diffuse; plus float(metallic)'s u m, absolute in
+// 1 - m (brdf_bound in reference_renderer.cpp).
+constexpr double kDiffuseColourSteps = 4;
+
+// srp: F0 = mix(0.04, A, metallic) = 0.04 (1 - m) + A m: float(A),
+// float(0.04), 1 - m, two products and a sum, relative to max(A, 0.04).
+constexpr double kSpecularColourSteps = 6;
+
+// radiance * specularStrength (1), times F0 and added to diffuse * radiance
+// (2): relative to the specular part.
+constexpr double kSpecularTermSteps = 3;
+
 // --- The combination ---
 
 // The formula at the top of this file, per channel, for a pixel whose shaded
@@ -168,11 +210,9 @@ constexpr double kLdr8DecodeAbsError = 3 * 0x1p-20;
 // unless the scene is checked against real time. A pixel that sees no
 // surface passes zeros and gets the floor alone.
 inline glm::dvec3 pixelTolerance(const glm::dvec3& value, const glm::dvec3& shadedBound,
-                                 const glm::dvec3& shiftChange, const glm::dvec3& interpolation,
-                                 double toleranceScale) {
-  return (glm::dvec3(kFlushToZeroFloor) +
-          (shadedBound + shiftChange + interpolation + glm::abs(value) * (kStorageRoundingSteps * kUnitRoundoff))) *
-         toleranceScale;
+                                 const glm::dvec3& shiftChange, const glm::dvec3& interpolation) {
+  return glm::dvec3(kFlushToZeroFloor) +
+         (shadedBound + shiftChange + interpolation + glm::abs(value) * (kStorageRoundingSteps * kUnitRoundoff));
 }
 
 }  // namespace reference::tolerance

@@ -30,6 +30,7 @@ layout(set = 2, binding = 0) uniform sampler2D gbufferAlbedo;  // rgb albedo; a 
 layout(set = 2, binding = 1) uniform sampler2D gbufferNormal;  // xyz unit normal; w window depth 0..1
 layout(set = 2, binding = 2) uniform sampler2D gbufferBase;    // rgb albedo * (ambient + lightmap)
 layout(set = 2, binding = 3) uniform sampler2D gbufferMask;    // the shadow mask, all ones without one
-layout(set = 2, binding = 4) uniform sampler2D lightBuffer;    // the light pass's sum (hdr) or product (ldr8)
+layout(set = 2, binding = 4) uniform sampler2D gbufferMaterial;  // x metallic, y smoothness, z 1 srp / 0 Lambert
+layout(set = 2, binding = 5) uniform sampler2D lightBuffer;    // the light pass's sum (hdr) or product (ldr8)
 
 #endif

@@ -23,11 +23,18 @@ void main() {
   }
   vec4 normalDepth = texelFetch(gbufferNormal, pixel, 0);
   vec4 mask = texelFetch(gbufferMask, pixel, 0);
+  vec4 material = texelFetch(gbufferMaterial, pixel, 0);
   vec3 ndc = vec3(vClip.xy / vClip.w, normalDepth.w);
   vec4 world = deferredFrame.inverseViewProjection * vec4(ndc, 1.0);
   // Camera-relative; absolute in the absolute-coordinates mutant.
   vec3 p = mutantWorldPosition(world.xyz / world.w);
   vec3 N = normalDepth.xyz;
-  vec3 c = albedo.rgb * packedLight(deferredLight.light, p, N, mask);
+  // The forward pass's BRDF for this one light (SPEC 3.8).
+  SurfaceBrdf surface = surfaceBrdf(albedo.rgb, material, N, viewDirection(p));
+  vec3 L;
+  vec3 radiance = packedLight(deferredLight.light, p, N, mask, L);
+  LightSums sums = LightSums(vec3(0.0), vec3(0.0));
+  addLight(sums, surface, radiance, L);
+  vec3 c = brdfColour(surface, sums);
   outLight = ldr8Buffer() ? vec4(exp2(-c), 1.0) : vec4(c, 1.0);
 }

@@ -24,5 +24,8 @@ layout(constant_id = 8) const bool LIGHTMAP = true;
 // writes exp2(-c) and the composite decodes -log2(max(x, 1/255)). The full
 // shader (every constant on) asks DeferredFrameBlock.bufferFormat (deferred_data.glsl).
 layout(constant_id = 9) const bool LDR8_BUFFER = true;
+// The srp BRDF (SPEC 3.8): some material has it, so diffuse and F0 come from
+// metallic and the specular lobe is evaluated; off, every material is Lambert.
+layout(constant_id = 10) const bool SPECULAR_BRDF = true;
 
 #endif

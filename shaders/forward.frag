@@ -27,27 +27,37 @@ void main() {
   // The shadow mask at this fragment (SPEC 3.5): all ones on objects without one.
   vec4 mask = vec4(1.0);
   if (SHADOW_MASK && objectData.lightList.z != 0) mask = texture(shadowMaskTexture, vLightmapUv);
-  vec3 light = vec3(0.0);
-  if (AMBIENT) light += frameData.ambient.rgb;
-  // Baked light (SPEC 3.6): the lightmap's irradiance, times albedo below.
-  if (LIGHTMAP && objectData.lightList.y != 0) light += texture(lightmapTexture, vLightmapUv).rgb;
+  SurfaceBrdf surface = surfaceBrdf(objectData.albedo.rgb, objectData.material, N, viewDirection(p));
+  // The radiance sum starts with what the diffuse colour multiplies besides
+  // the lights: ambient and the baked light (SPEC 3.6, the lightmap's irradiance).
+  LightSums sums = LightSums(vec3(0.0), vec3(0.0));
+  if (AMBIENT) sums.radiance += frameData.ambient.rgb;
+  if (LIGHTMAP && objectData.lightList.y != 0) sums.radiance += texture(lightmapTexture, vLightmapUv).rgb;
+  vec3 L;
   // srp keeps directional lights apart and applies them to every object; the
   // legacy profile packs them with the others.
   if (DIRECTIONAL_LIGHTS && !legacyProfile())
-    for (int i = 0; i < frameData.lightCounts.x; ++i)
-      light += directionalLight(frameData.directionalLights[i], N, mask);
+    for (int i = 0; i < frameData.lightCounts.x; ++i) {
+      vec3 radiance = directionalLight(frameData.directionalLights[i], N, mask, L);
+      addLight(sums, surface, radiance, L);
+    }
   if (objectListInUse()) {
     // srp: min(count, 8) per pixel; legacy: list positions 0-3 per pixel.
     int perPixel = legacyProfile() ? kLegacyPixelLights : kMaxLightsPerObject;
     int count = min(objectData.lightList.x, perPixel);
     // Mutant: srp's loop runs to count (objectLightIndex wraps past 8).
     if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectData.lightList.x;
-    for (int k = 0; k < count; ++k)
-      light += packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask);
+    for (int k = 0; k < count; ++k) {
+      vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask, L);
+      addLight(sums, surface, radiance, L);
+    }
   } else {
-    for (int i = 0; i < frameData.lightCounts.y; ++i)
-      light += packedLight(frameData.otherLights[i], p, N, mask);
+    for (int i = 0; i < frameData.lightCounts.y; ++i) {
+      vec3 radiance = packedLight(frameData.otherLights[i], p, N, mask, L);
+      addLight(sums, surface, radiance, L);
+    }
   }
-  if (legacyProfile()) light += vVertexLighting;
-  outColor = vec4(objectData.albedo.rgb * light, 1.0);
+  // Vertex lights: the legacy profile, which is Lambert only (SPEC 2).
+  if (legacyProfile()) sums.radiance += vVertexLighting;
+  outColor = vec4(brdfColour(surface, sums), 1.0);
 }

@@ -36,8 +36,9 @@ void main() {
     if (MUTANT == MUTANT_LEGACY_VERTEX_LIGHTS_DROPPED) count = 0;
     // Mutant: rotation * scale * normal, never normalised.
     vec3 vertexNormal = MUTANT == MUTANT_VERTEX_NORMAL_NOT_NORMALISED ? mat3(objectData.model) * inNormal : N;
+    vec3 L;  // unused: vertex lights are Lambert (the legacy profile has no srp BRDF)
     for (int k = kLegacyPixelLights; k < count; ++k)
-      vVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0));
+      vVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), L);
   }
   gl_Position = frameData.viewProjection * position;
 }

@@ -21,15 +21,21 @@ layout(location = 0) out vec4 outAlbedo;  // rgb albedo, a = 1 (cleared to 0: ba
 layout(location = 1) out vec4 outNormal;  // xyz normalize(vNormal), w = window depth
 layout(location = 2) out vec4 outBase;    // rgb albedo * (ambient + lightmap)
 layout(location = 3) out vec4 outMask;    // the shadow mask, all ones without one
+layout(location = 4) out vec4 outMaterial;  // x metallic, y smoothness, z 1 srp / 0 Lambert (SPEC 3.8)
 
 void main() {
   vec3 albedo = objectData.albedo.rgb;
   outAlbedo = vec4(albedo, 1.0);
-  outNormal = vec4(normalize(vNormal), gl_FragCoord.z);
-  vec3 base = vec3(0.0);
-  if (AMBIENT) base += frameData.ambient.rgb;
-  if (LIGHTMAP && objectData.lightList.y != 0) base += texture(lightmapTexture, vLightmapUv).rgb;
-  outBase = vec4(albedo * base, 1.0);
+  vec3 N = normalize(vNormal);
+  outNormal = vec4(N, gl_FragCoord.z);
+  // The ambient and baked terms, times the BRDF's diffuse colour (SPEC 3.8;
+  // A for Lambert): exactly the forward pass's sums before any light.
+  SurfaceBrdf surface = surfaceBrdf(albedo, objectData.material, N, vec3(0.0));
+  LightSums sums = LightSums(vec3(0.0), vec3(0.0));
+  if (AMBIENT) sums.radiance += frameData.ambient.rgb;
+  if (LIGHTMAP && objectData.lightList.y != 0) sums.radiance += texture(lightmapTexture, vLightmapUv).rgb;
+  outBase = vec4(surface.diffuse * sums.radiance, 1.0);
+  outMaterial = objectData.material;
   vec4 mask = vec4(1.0);
   if (SHADOW_MASK && objectData.lightList.z != 0) mask = texture(shadowMaskTexture, vLightmapUv);
   outMask = mask;

@@ -20,7 +20,8 @@ layout(std140, set = 0, binding = 0) uniform FrameBlock {
   ivec4 lightCounts;    // x: directional lights, y: other lights, z: 1 for the legacy profile
   Light directionalLights[4];
   Light otherLights[64];
-  vec4 cameraPosition;  // xyz: the camera position in float; read only by the absolute-coordinates mutant
+  vec4 cameraPosition;  // xyz: the camera position in float, w: 1; read only by the absolute-coordinates mutants
+  vec4 view;            // SPEC 3.8: xyz the orthographic V; w 1 orthographic, 0 perspective (V = normalize(-p))
 } frameData;
 
 // The specialised shader knows this from its constants; the full shader

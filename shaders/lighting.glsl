@@ -65,9 +65,10 @@ float shadowMaskAttenuation(Light light, vec4 mask) {
   return mix(1.0, mask[channel], strength);
 }
 
-// SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask (albedo applied by the caller).
-vec3 directionalLight(Light light, vec3 N, vec4 mask) {
-  vec3 L = light.position.xyz;
+// SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask, the radiance the
+// BRDF weighs (addLight); L is returned for the specular lobe.
+vec3 directionalLight(Light light, vec3 N, vec4 mask, out vec3 L) {
+  L = light.position.xyz;
   float cosine = dot(N, L);
   if (MUTANT != MUTANT_DIRECTIONAL_NOT_SATURATED) cosine = saturate(cosine);
   return light.color.rgb * (cosine * shadowMaskAttenuation(light, mask));
@@ -103,10 +104,10 @@ float mutantAttenuationPrecision(float attenuation) {
 
 // SPEC 3.2: point and spot lights at camera-relative position p (the
 // absolute-coordinates mutant passes absolute ones).
-vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask) {
+vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, out vec3 L) {
   vec3 ray = mutantWorldPosition(light.position.xyz) - p;
   float distSqr = clampedDistanceSquared(ray);
-  vec3 L = ray * inversesqrt(distSqr);
+  L = ray * inversesqrt(distSqr);
   float attenuation = rangeAttenuation(distSqr, light.color.w) / distSqr;
   if (SPOT_LIGHTS) attenuation *= spotAttenuation(light.spotDirection.xyz, L, light.spotAngles.xy);
   attenuation *= shadowMaskAttenuation(light, mask);
@@ -118,10 +119,100 @@ vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask) {
 
 // A light of the packed `otherLights` array. In the legacy profile it holds
 // directional lights too (w = 0); in srp only point and spot lights.
-vec3 packedLight(Light light, vec3 p, vec3 N, vec4 mask) {
-  if (DIRECTIONAL_LIGHTS && light.position.w == 0.0) return directionalLight(light, N, mask);
+vec3 packedLight(Light light, vec3 p, vec3 N, vec4 mask, out vec3 L) {
+  L = vec3(0.0);
+  if (DIRECTIONAL_LIGHTS && light.position.w == 0.0) return directionalLight(light, N, mask, L);
   if (!POINT_LIGHTS && !SPOT_LIGHTS) return vec3(0.0);
-  return localLight(light, p, N, mask);
+  return localLight(light, p, N, mask, L);
+}
+
+// --- SPEC 3.8: the custom pipeline's BRDF -------------------------------
+
+const float kMinReflectivity = 0.04;       // oneMinusReflectivity = 0.96 (1 - metallic)
+const float kLobeDenominatorOffset = 1.00001;  // d2 = square(nh2 (r2 - 1) + 1.00001)
+const float kMinLh2 = 0.1;                 // max(0.1, lh2)
+const float kSafeNormalizeFloor = 1.17549435e-38;  // SafeNormalize: max(dot(v, v), FLT_MIN)
+
+// What the BRDF needs at a fragment. Lambert (or SPECULAR_BRDF off):
+// diffuse = A and no lobe, SPEC 3.1-3.2 as written.
+struct SurfaceBrdf {
+  vec3 diffuse;   // multiplies ambient, lightmap and every light's radiance
+  vec3 specular;  // F0: multiplies radiance * specularStrength
+  float roughness;
+  bool lobe;
+  vec3 normal;
+  vec3 view;      // V
+};
+
+// SPEC 3.8's V at the camera-relative p: normalize(cameraPosition - p) =
+// normalize(-p); orthographic: the frame's constant opposite of the view
+// direction.
+vec3 viewDirection(vec3 p) {
+  if (frameData.view.w != 0.0) return frameData.view.xyz;
+  if (MUTANT == MUTANT_VIEW_ABSOLUTE_COORDINATES) {
+    // Mutant: camera - p in absolute float32 coordinates. cameraPosition.w
+    // is 1, which the compiler cannot know, so (p + c) - c is not folded.
+    vec3 absolute = p + frameData.cameraPosition.xyz;
+    return normalize(frameData.cameraPosition.xyz * frameData.cameraPosition.w - absolute);
+  }
+  return normalize(-p);
+}
+
+// `material`: x metallic, y smoothness, z 1 for srp (GpuObjectBlock::material,
+// or the G-buffer's material target on the deferred path).
+SurfaceBrdf surfaceBrdf(vec3 albedo, vec4 material, vec3 N, vec3 V) {
+  SurfaceBrdf s;
+  s.normal = N;
+  s.view = V;
+  s.lobe = SPECULAR_BRDF && material.z != 0.0;
+  if (!s.lobe) {
+    s.diffuse = albedo;
+    s.specular = vec3(0.0);
+    s.roughness = 0.0;
+    return s;
+  }
+  float metallic = material.x;
+  float oneMinusReflectivity = (1.0 - kMinReflectivity) * (1.0 - metallic);
+  s.diffuse = albedo * oneMinusReflectivity;
+  s.specular = MUTANT == MUTANT_F0_ALBEDO_ALWAYS ? albedo : mix(vec3(kMinReflectivity), albedo, metallic);
+  s.roughness = square(1.0 - material.y);
+  return s;
+}
+
+// SPEC 3.8's specularStrength in direction L.
+float specularStrength(SurfaceBrdf s, vec3 L) {
+  vec3 h = L + s.view;
+  vec3 H = h * inversesqrt(max(dot(h, h), kSafeNormalizeFloor));  // SafeNormalize: L = -V gives 0
+  if (MUTANT == MUTANT_HALF_VECTOR_NOT_NORMALISED) H = h;
+  float nh2 = square(saturate(dot(s.normal, H)));
+  float lh2 = square(saturate(dot(L, H)));
+  float r2 = square(s.roughness);
+  float offset = MUTANT == MUTANT_D2_WITHOUT_EPSILON ? 1.0 : kLobeDenominatorOffset;
+  float d2 = square(nh2 * (r2 - 1.0) + offset);
+  float lh2Floor = MUTANT == MUTANT_LH2_NOT_CLAMPED ? lh2 : max(kMinLh2, lh2);
+  return r2 / (d2 * lh2Floor * (s.roughness * 4.0 + 2.0));
+}
+
+// SPEC 3.8's sum, split where the colours factor out: the diffuse colour
+// times the sum of radiances (which starts at ambient + lightmap), F0 times
+// the sum of radiance * specularStrength. The forward pass sums every light;
+// the deferred light pass one.
+struct LightSums {
+  vec3 radiance;
+  vec3 specular;
+};
+
+void addLight(inout LightSums sums, SurfaceBrdf s, vec3 radiance, vec3 L) {
+  sums.radiance += radiance;
+  if (s.lobe) sums.specular += radiance * specularStrength(s, L);
+}
+
+// finalColor * saturate(dot(N, L)) * attenuation * directBRDF summed, plus
+// diffuse * (ambient + lightmap): SPEC 3 and 3.8.
+vec3 brdfColour(SurfaceBrdf s, LightSums sums) {
+  vec3 colour = s.diffuse * sums.radiance;
+  if (s.lobe) colour += s.specular * sums.specular;
+  return colour;
 }
 
 #endif

@@ -27,5 +27,10 @@ const int MUTANT_SHADOW_STRENGTH_IGNORED = 14;        // shadowMask = mask[c], a
 const int MUTANT_UNCLAMPED_LDR_DECODE = 17;           // the ldr8 composite decodes -log2(x), no max(x, 1/255)
 // 18 (point-volume-outside-only) changes the light pass's pipeline state
 // (front faces, depth test LESS_OR_EQUAL for icosphere volumes), not the shader.
+const int MUTANT_D2_WITHOUT_EPSILON = 19;         // d2 = square(nh2 (r2 - 1) + 1), no 1.00001 (SPEC 3.8)
+const int MUTANT_LH2_NOT_CLAMPED = 20;            // specularStrength divides by lh2, not max(0.1, lh2)
+const int MUTANT_F0_ALBEDO_ALWAYS = 21;           // F0 = albedo whatever the metallic
+const int MUTANT_VIEW_ABSOLUTE_COORDINATES = 22;  // V = normalize(camera - p) in absolute float32 coordinates
+const int MUTANT_HALF_VECTOR_NOT_NORMALISED = 23; // H = L + V, not normalised
 
 #endif

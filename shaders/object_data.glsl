@@ -15,6 +15,7 @@ layout(std140, set = 0, binding = 1) uniform ObjectBlock {
   ivec4 lightList;      // x: list count (may exceed 8), y: lightmap, z: shadow mask, w: 1 when the list is in use
   ivec4 lightIndices[2];  // packed indices into otherLights, -1 past the end
   vec4 lightmapTransform;
+  vec4 material;        // x: metallic, y: smoothness, z: 1 for the srp BRDF (SPEC 3.8), 0 Lambert
 } objectData;
 
 // The full shader asks the object whether its list is in use.

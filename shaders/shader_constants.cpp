@@ -17,6 +17,8 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kLightmap] = all || f.lightmap;
   // The full shader reads the buffer format from DeferredFrameBlock.
   v[kLdr8Buffer] = all || f.ldr8Buffer;
+  // The full shader asks each object's material (object_data.glsl).
+  v[kSpecularBrdf] = all || f.specularBrdf;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   return v;
 }

@@ -21,7 +21,8 @@ enum ConstantId : std::uint32_t {
   kMutant = 7,
   kLightmap = 8,
   kLdr8Buffer = 9,  // deferred only: the light buffer is ldr8 (SPEC 3.7)
-  kConstantCount = 10,
+  kSpecularBrdf = 10,  // some material has the srp BRDF (SPEC 3.8)
+  kConstantCount = 11,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

@@ -37,6 +37,16 @@ const std::vector<MutantName>& mutantNames() {
        "the ldr8 light buffer decodes -log2(x) without max(x, 1/255), so a dark texel decodes to infinity (SPEC 3.7)"},
       {Mutant::PointVolumeOutsideOnly, "point-volume-outside-only",
        "sphere light volumes drawn front faces with depth test LESS_OR_EQUAL: nothing lit with the camera inside (SPEC 3.7)"},
+      {Mutant::D2WithoutEpsilon, "d2-without-epsilon",
+       "d2 = square(nh2 (r2 - 1) + 1) without the 1.00001: infinite at the peak of smoothness 1, too bright near it (SPEC 3.8)"},
+      {Mutant::Lh2NotClamped, "lh2-not-clamped",
+       "specularStrength divides by lh2 instead of max(0.1, lh2): too bright at grazing light and view (SPEC 3.8)"},
+      {Mutant::F0AlbedoAlways, "f0-albedo-always",
+       "F0 = albedo whatever the metallic, instead of lerp(0.04, albedo, metallic) (SPEC 3.8)"},
+      {Mutant::ViewAbsoluteCoordinates, "view-absolute-coordinates",
+       "V = normalize(camera - p) computed from absolute float32 coordinates, not camera-relative (SPEC 3.8, far from the origin)"},
+      {Mutant::HalfVectorNotNormalised, "half-vector-not-normalised",
+       "H = L + V without SafeNormalize: the lobe saturates over a wide plateau (SPEC 3.8)"},
   };
   return names;
 }

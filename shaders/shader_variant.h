@@ -40,6 +40,12 @@ enum class Mutant : int {
   // Pipeline-state mutant: the backends draw icosphere light volumes front
   // faces with depth test LESS_OR_EQUAL when they see it (no GLSL change).
   PointVolumeOutsideOnly = 18,     // point (and sphere-shaped spot) volumes drawn without the camera-inside handling (SPEC 3.7)
+  // The specular BRDF (SPEC 3.8), shader mutants.
+  D2WithoutEpsilon = 19,           // d2 = square(nh2 (r2 - 1) + 1), without the 1.00001
+  Lh2NotClamped = 20,              // specularStrength divides by lh2, not max(0.1, lh2)
+  F0AlbedoAlways = 21,             // F0 = albedo whatever the metallic
+  ViewAbsoluteCoordinates = 22,    // V = normalize(camera - p) from absolute float32 coordinates
+  HalfVectorNotNormalised = 23,    // H = L + V, not SafeNormalize(L + V)
 };
 
 struct MutantName {

@@ -26,7 +26,12 @@ set(mutant_killers
   "demoted-light-still-lit=shadowmask/fifth-overlapping-demoted.json"
   "legacy-falloff-baked=baked/spot-directional-no-range.json,baked/shadows-box-on-plane.json"
   "unclamped-ldr-decode=deferred/ldr8-sums.json"
-  "point-volume-outside-only=deferred/camera-inside-point-volume.json,deferred/camera-inside-wide-spot-volume.json")
+  "point-volume-outside-only=deferred/camera-inside-point-volume.json,deferred/camera-inside-wide-spot-volume.json"
+  "d2-without-epsilon=brdf/smoothness-1.json,brdf/point-1cm-above.json"
+  "lh2-not-clamped=brdf/grazing-view.json,brdf/light-opposite-view.json"
+  "f0-albedo-always=brdf/metallic-0.json"
+  "view-absolute-coordinates=brdf/translated-1e5.json"
+  "half-vector-not-normalised=brdf/smoothness-0p9.json")
 foreach(entry ${mutant_killers})
   string(REPLACE "=" ";" mutant_parts ${entry})
   list(GET mutant_parts 0 mutant)

@@ -10,7 +10,7 @@ namespace {
 // Every G-buffer texture's sampler (shaders/deferred_data.glsl), in
 // GbufferTexture order.
 constexpr const char* kGbufferSamplers[kGbufferColourCount] = {"gbufferAlbedo", "gbufferNormal", "gbufferBase",
-                                                               "gbufferMask"};
+                                                               "gbufferMask", "gbufferMaterial"};
 
 }  // namespace
 

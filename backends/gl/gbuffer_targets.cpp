@@ -59,7 +59,7 @@ void GbufferTargets::makeGbuffer() {
   gl_.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.get(), 0);
   // Fragment output location i (gbuffer.frag) writes colour attachment i.
   gl_.glDrawBuffers(kGbufferColourCount, drawBuffers);
-  requireComplete("the G-buffer (four RGBA32F colour textures and a 32-bit float depth texture)");
+  requireComplete("the G-buffer (five RGBA32F colour textures and a 32-bit float depth texture)");
   gl_.check("creating the G-buffer");
   gbufferFramebuffer_ = std::move(framebuffer);
 }

@@ -1,6 +1,7 @@
 // The deferred path's render targets on OpenGL (SPEC 3.7, docs/model.md):
-//   the G-buffer framebuffer: four RGBA32F colour textures (albedo, normal
-//   with the window depth in w, base, shadow mask) and a
+//   the G-buffer framebuffer: the RGBA32F colour textures of
+//   lighting::GbufferTarget (albedo, normal with the window depth in w,
+//   base, shadow mask, material) and a
 //   GL_DEPTH_COMPONENT32F depth texture;
 //   the light framebuffer: the light buffer (RGBA32F hdr32, RGBA16F hdr16,
 //   RGBA8 ldr8) and the same depth texture, which the light pass tests
@@ -10,14 +11,15 @@
 #pragma once
 
 #include "backends/gl/gl_objects.h"
+#include "lighting/deferred_lights.h"
 #include "lighting/scene.h"
 
 #include <array>
 
 namespace backends::gl {
 
-enum class GbufferTexture { Albedo = 0, Normal = 1, Base = 2, Mask = 3 };
-constexpr int kGbufferColourCount = 4;
+using GbufferTexture = lighting::GbufferTarget;
+constexpr int kGbufferColourCount = lighting::kGbufferTargetCount;
 
 class GbufferTargets {
  public:

@@ -66,15 +66,16 @@ GBufferTextureSets::GBufferTextureSets(const VulkanDevice& device, const vk::rai
   const std::array<vk::DescriptorPoolSize, 1> perSet{{{vk::DescriptorType::eCombinedImageSampler, kBindings}}};
   sets_ = DescriptorSets(device.device, layout, perSet, 2);  // [0] light pass, [1] composite
 
-  // Binding 4 of the light pass's set is never read there (the light buffer
-  // is being drawn); it points at the base image so the set is complete.
+  // The light buffer's binding of the light pass's set is never read there
+  // (the light buffer is being drawn); it points at the base image so the
+  // set is complete.
   auto info = [&](const DeviceImage& image) {
     return vk::DescriptorImageInfo{*sampler_, *image.view, vk::ImageLayout::eShaderReadOnlyOptimal};
   };
   std::array<std::array<vk::DescriptorImageInfo, kBindings>, 2> infos;
   for (std::size_t s = 0; s < 2; ++s)
     for (std::size_t b = 0; b < kGBufferImageCount; ++b) infos[s][b] = info(targets.gbuffer[b]);
-  infos[0][kGBufferImageCount] = info(targets.gbuffer[2]);
+  infos[0][kGBufferImageCount] = info(targets.gbuffer[std::size_t(lighting::GbufferTarget::Base)]);
   infos[1][kGBufferImageCount] = info(targets.lightBuffer);
   std::vector<vk::WriteDescriptorSet> writes;
   for (std::size_t s = 0; s < 2; ++s)

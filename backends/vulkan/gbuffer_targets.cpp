@@ -39,6 +39,11 @@ void requireDeferredFormats(const VulkanDevice& device, lighting::DeferredBuffer
   // (docs/model.md). That is a missing feature, never a wrong picture.
   if (!device.depthClamp)
     throw NotSupportedError("the deferred path needs the depthClamp device feature, which this device lacks");
+  const std::uint32_t attachments = device.physical.getProperties().limits.maxColorAttachments;
+  if (attachments < kGBufferImageCount)
+    throw NotSupportedError("the deferred path draws " + std::to_string(kGBufferImageCount) +
+                            " G-buffer targets at once; this device allows " + std::to_string(attachments) +
+                            " colour attachments");
   using F = vk::FormatFeatureFlagBits;
   requireFeatures(device, kGBufferFormat, F::eColorAttachment | F::eSampledImage, "the deferred G-buffer",
                   "COLOR_ATTACHMENT and SAMPLED_IMAGE");
@@ -53,7 +58,8 @@ GBufferTargets::GBufferTargets(const VulkanDevice& device, vk::Extent2D size, li
     : extent(size),
       lightBufferKind(buffer),
       gbuffer{colorImage(device, kGBufferFormat, size), colorImage(device, kGBufferFormat, size),
-              colorImage(device, kGBufferFormat, size), colorImage(device, kGBufferFormat, size)},
+              colorImage(device, kGBufferFormat, size), colorImage(device, kGBufferFormat, size),
+              colorImage(device, kGBufferFormat, size)},
       depth(device, kDepthFormat, size, vk::ImageUsageFlagBits::eDepthStencilAttachment, vk::ImageAspectFlagBits::eDepth),
       lightBuffer(colorImage(device, lightBufferFormat(buffer), size)) {}
 

@@ -1,12 +1,14 @@
 // What the deferred path (SPEC 3.7) draws into besides the output colour
-// image of frame_resources.h: the four RGBA32F G-buffer images (albedo,
-// normal with the window depth in w, base, shadow mask), their D32 depth, and
+// image of frame_resources.h: the RGBA32F G-buffer images of
+// lighting::GbufferTarget (albedo, normal with the window depth in w, base,
+// shadow mask, material), their D32 depth, and
 // the light buffer in the scene's `deferred_buffer` format. Every colour
 // image is also sampled by a later pass. Rebuilt when the size or the light
 // buffer's format changes.
 #pragma once
 
 #include "backends/vulkan/gpu_memory.h"
+#include "lighting/deferred_lights.h"
 #include "lighting/scene.h"
 
 #include <array>
@@ -14,7 +16,7 @@
 namespace backends::vulkan {
 
 constexpr vk::Format kGBufferFormat = vk::Format::eR32G32B32A32Sfloat;
-constexpr std::size_t kGBufferImageCount = 4;  // albedo, normal, base, mask: colour locations 0-3
+constexpr std::size_t kGBufferImageCount = lighting::kGbufferTargetCount;  // lighting::GbufferTarget order
 
 // hdr32: RGBA32F, hdr16: RGBA16F, ldr8: RGBA8 UNORM.
 vk::Format lightBufferFormat(lighting::DeferredBuffer buffer);

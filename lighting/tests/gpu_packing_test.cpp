@@ -26,7 +26,8 @@ TEST(GpuPacking, Std140OffsetsOfTheFrameBlock) {
   EXPECT_EQ(offsetof(GpuFrameBlock, directionalLights), 96u);
   EXPECT_EQ(offsetof(GpuFrameBlock, otherLights), 96u + 4 * 64);
   EXPECT_EQ(offsetof(GpuFrameBlock, cameraPosition), 96u + 68 * 64);
-  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 16);
+  EXPECT_EQ(offsetof(GpuFrameBlock, view), 96u + 68 * 64 + 16);
+  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 32);
 }
 
 TEST(GpuPacking, Std140OffsetsOfTheObjectBlock) {
@@ -36,7 +37,8 @@ TEST(GpuPacking, Std140OffsetsOfTheObjectBlock) {
   EXPECT_EQ(offsetof(GpuObjectBlock, lightList), 144u);
   EXPECT_EQ(offsetof(GpuObjectBlock, lightIndices), 160u);
   EXPECT_EQ(offsetof(GpuObjectBlock, lightmapTransform), 192u);
-  EXPECT_EQ(sizeof(GpuObjectBlock), 208u);
+  EXPECT_EQ(offsetof(GpuObjectBlock, material), 208u);
+  EXPECT_EQ(sizeof(GpuObjectBlock), 224u);
 }
 
 Scene farScene() {

@@ -675,5 +675,42 @@ TEST(SceneLoaderError, DeeplyNestedValueIsAnErrorNotACrash) {
   expectError(sceneWithLights(deep), "/lights/0", 3, 13, "expected an object, got an array");
 }
 
+// ---------------------------------------------------------------------------
+// SPEC 2 materials: brdf, metallic, smoothness (SPEC 3.8)
+
+TEST(SceneLoader, MaterialDefaultsToLambertAndSrpReadsMetallicAndSmoothness) {
+  const Scene lambert = loadSceneText(sceneWithObjects(R"([{"material": {"albedo": [0.5, 0.5, 0.5]}}])"), "s.json");
+  EXPECT_EQ(lambert.objects[0].brdf, Brdf::Lambert);
+  const Scene srpDefaults = loadSceneText(sceneWithObjects(R"([{"material": {"brdf": "srp"}}])"), "s.json");
+  EXPECT_EQ(srpDefaults.objects[0].brdf, Brdf::Srp);
+  EXPECT_EQ(srpDefaults.objects[0].metallic, 0.0);
+  EXPECT_EQ(srpDefaults.objects[0].smoothness, 0.5);
+  const Scene srp = loadSceneText(
+      sceneWithObjects(R"([{"material": {"brdf": "srp", "metallic": 1, "smoothness": 0.9}}])"), "s.json");
+  EXPECT_EQ(srp.objects[0].metallic, 1.0);
+  EXPECT_EQ(srp.objects[0].smoothness, 0.9);
+}
+
+TEST(SceneLoaderError, SrpMaterialKeysAndProfile) {
+  // Line 2: ` "objects": [{"material": {"metallic": 0.5}}]`: '{' 27, "metallic" at 28.
+  expectError(sceneWithObjects(R"([{"material": {"metallic": 0.5}}])"), "/objects/0/material/metallic", 2, 28,
+              "key 'metallic' does not apply to brdf 'lambert'");
+  expectError(sceneWithObjects(R"([{"material": {"brdf": "lambert", "smoothness": 0.5}}])"),
+              "/objects/0/material/smoothness", 2, 47, "does not apply to brdf 'lambert'");
+  // "brdf" 28-33, ':' 34, ' ' 35, value at 36.
+  expectError(sceneWithObjects(R"([{"material": {"brdf": "ggx"}}])"), "/objects/0/material/brdf", 2, 36,
+              "expected one of: lambert, srp; got 'ggx'");
+  // "brdf" 28-33, ':' 34, ' ' 35, "srp" 36-40, ',' 41, "metallic" 43-52, ':' 53, ' ' 54, value 55.
+  expectError(sceneWithObjects(R"([{"material": {"brdf": "srp", "metallic": 1.5}}])"),
+              "/objects/0/material/metallic", 2, 55, "expected a number in [0, 1], got 1.5");
+  // The legacy profile is diffuse only (SPEC 2).
+  const std::string legacy =
+      "{\"lightcts\": 1, \"image\": {}, \"camera\": {}, \"pipeline\": {\"profile\": \"legacy\"},\n"
+      " \"objects\": [{}, {\"material\": {\"brdf\": \"srp\"}}],\n \"lights\": []}";
+  // Line 2: ` "objects": [{}, {"material": {"brdf": "srp"}}]`: '{' 18, "material" 19-28, '{' 31,
+  // "brdf" 32-37, ':' 38, ' ' 39, value at 40.
+  expectError(legacy, "/objects/1/material/brdf", 2, 40, "brdf 'srp' is not available in the legacy profile");
+}
+
 }  // namespace
 }  // namespace lighting

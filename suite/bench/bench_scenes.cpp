@@ -84,6 +84,14 @@ Scene topDownScene(int width, int height, const std::string& name) {
 
 }  // namespace
 
+namespace {
+void setSpecular(Object& object) {
+  object.brdf = Brdf::Srp;
+  object.metallic = kFieldMetallic;
+  object.smoothness = kFieldSmoothness;
+}
+}  // namespace
+
 // Seen from straight above (orthographic, exactly the field), so every pixel
 // is covered. On the 8x8 field of 1280x720 each tile is 1.6 x 0.9 with one
 // light of range 0.85 over its centre: a light touches the bounds of its own
@@ -114,6 +122,7 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
       tile.transform.translate = {x0 + (i + 0.5) * tileX, 0, z0 + (k + 0.5) * tileZ};
       tile.albedo = {0.8, 0.8, 0.8};
       s.objects.push_back(tile);
+      if (spec.specularBrdf) setSpecular(s.objects.back());
     }
   }
   if (spec.boxes) {
@@ -126,6 +135,7 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
         box.transform.translate = {x0 + i * tileX, 0.25, z0 + k * tileZ};
         box.albedo = {0.9, 0.6, 0.3};
         s.objects.push_back(box);
+        if (spec.specularBrdf) setSpecular(s.objects.back());
       }
     }
   }

@@ -47,7 +47,16 @@ struct FieldSpec {
   // over the field; the range scales with the cell (0.85 on 1.6 x 0.9 cells).
   int lightColumns = 8, lightRows = 8;
   FrameMode mode = FrameMode::AllLights;
+  // Every tile and box with the srp BRDF (SPEC 3.8; kFieldMetallic,
+  // kFieldSmoothness) instead of Lambert: what the specular lobe costs.
+  bool specularBrdf = false;
 };
+
+// The srp material of the field's specular modes: a highlight of a few
+// pixels under each light seen from straight above (smoothness 0.8), with a
+// coloured F0 (metallic 0.3 of the tiles' and boxes' albedo).
+inline constexpr double kFieldMetallic = 0.3;
+inline constexpr double kFieldSmoothness = 0.8;
 
 // The scene of `spec` (the mode's profile and lists set; the shader variant
 // is the backend's business).

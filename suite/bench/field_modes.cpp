@@ -20,7 +20,15 @@ struct ModeSpec {
   FrameMode scene;  // which field: all lights, per-object lists, legacy, deferred
   bool fullShader;
   std::string name;
+  bool specularBrdf = false;  // the srp BRDF on every object (SPEC 3.8)
 };
+
+// The specular modes (SPEC 9, "the specular BRDF against Lambert"): the same
+// field and lights with every object srp, forward with all lights and with
+// per-object lists, each specialised and with the full shader; their error
+// is against the ideal reference of the srp field. The Lambert modes of the
+// same name without "srp-brdf" are what they cost against.
+const char* const kSpecularSuffix = "srp-brdf";
 
 std::vector<ModeSpec> modesOf(const RunState& run) {
   std::vector<ModeSpec> modes = {{FrameMode::AllLights, false, modeName(FrameMode::AllLights)},
@@ -30,6 +38,13 @@ std::vector<ModeSpec> modesOf(const RunState& run) {
                                  {FrameMode::Legacy4x4, true, modeName(FrameMode::Legacy4x4) + "-full-shader"}};
   if (!run.slow()) modes.insert(modes.begin() + 3, {FrameMode::AllLights, true, "full-shader"});
   if (run.settings.quick) modes.resize(2);
+  const std::string specular = kSpecularSuffix;
+  modes.push_back({FrameMode::AllLights, false, specular, true});
+  if (!run.settings.quick) {
+    modes.push_back({FrameMode::PerObject, false, modeName(FrameMode::PerObject) + "-" + specular, true});
+    if (!run.slow()) modes.push_back({FrameMode::AllLights, true, specular + "-full-shader", true});
+    modes.push_back({FrameMode::PerObject, true, modeName(FrameMode::PerObject) + "-" + specular + "-full-shader", true});
+  }
   for (const FrameMode deferred : {FrameMode::DeferredHdr32, FrameMode::DeferredHdr16, FrameMode::DeferredLdr8})
     modes.push_back({deferred, false, modeName(deferred)});
   return modes;
@@ -43,10 +58,12 @@ FieldModes fieldModes(const RunState& run) {
   for (const ModeSpec& mode : modesOf(run)) {
     FieldSpec field;
     field.mode = mode.scene;
+    field.specularBrdf = mode.specularBrdf;
     BenchFrameSpec spec;
     spec.prepared = baking::prepareBakedScene(fieldScene(field, scene + "-" + mode.name));
     spec.fullShader = mode.fullShader;
-    spec.referenceKey = scene + (mode.scene == FrameMode::Legacy4x4 ? "/legacy" : "/srp");
+    spec.referenceKey = scene + (mode.scene == FrameMode::Legacy4x4 ? "/legacy" : "/srp") +
+                        (mode.specularBrdf ? "-" + std::string(kSpecularSuffix) : "");
     spec.errorKey = scene + "/" + mode.name;
     spec.everyLightInView = true;
     if (deferredBufferOf(mode.scene)) {

@@ -1,5 +1,6 @@
 #include "suite/bench/frame_timer.h"
 
+#include "suite/bench/lighting_cost.h"
 #include "suite/bench/wall_clock.h"
 
 #include <exception>
@@ -9,7 +10,7 @@
 namespace bench {
 namespace {
 
-void setLoadCounters(benchmark::State& state, const RunState& run, const FrameLoad& load) {
+void setLoadCounters(benchmark::State& state, const RunState& run, const FrameLoad& load, bool specularLobe) {
   auto& c = state.counters;
   const double iterations = double(state.iterations());
   c["pixels"] = load.pixels;
@@ -19,8 +20,11 @@ void setLoadCounters(benchmark::State& state, const RunState& run, const FrameLo
   c["pixel_light_evals_per_s"] =
       benchmark::Counter(load.pixels * load.lightsPerPixel * iterations, benchmark::Counter::kIsRate);
   if (run.settings.peakGflops && run.flopsPerPixelLight > 0) {
-    c["flops_per_pixel_light"] = run.flopsPerPixelLight;
-    c["limit_ms"] = load.pixels * load.lightsPerPixel * run.flopsPerPixelLight / (*run.settings.peakGflops * 1e9) * 1e3;
+    // A frame with srp materials evaluates the lobe per light too (counted
+    // as if every pixel had it: the field's specular modes are srp throughout).
+    const double flops = run.flopsPerPixelLight + (specularLobe ? flopsOfSpecularLobe() : 0.0);
+    c["flops_per_pixel_light"] = flops;
+    c["limit_ms"] = load.pixels * load.lightsPerPixel * flops / (*run.settings.peakGflops * 1e9) * 1e3;
   }
 }
 
@@ -77,7 +81,7 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
     c["wall_ms"] = benchmark::Counter(wallMs, benchmark::Counter::kAvgIterations);
     if (deviceEveryTime && state.iterations() > 0)
       c["device_ms"] = benchmark::Counter(deviceMs, benchmark::Counter::kAvgIterations);
-    setLoadCounters(state, run, bench.load);
+    setLoadCounters(state, run, bench.load, bench.frame.features.specularBrdf);
     // One readback per draw: frame_readback's last image when it has one.
     const auto lastImage = [&] { return image.pixels.empty() ? backend.readback() : std::move(image); };
     if (withError) setErrorCounters(state, run.errorFor(bench, lastImage));

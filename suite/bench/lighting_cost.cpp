@@ -6,6 +6,8 @@
 
 #include "suite/bench/peak_rate.h"
 
+#include <cstddef>
+
 namespace bench {
 namespace {
 
@@ -45,16 +47,47 @@ constexpr Step kSteps[] = {
     {"light += ... in forward.frag (3 add)", 3},
 };
 
-constexpr int sumOfSteps() {
+// SPEC 3.8's lobe per light (specularStrength and addLight in
+// shaders/lighting.glsl), on top of the rows above for an srp material.
+constexpr Step kSpecularSteps[] = {
+    {"h = L + V (3 add)", 3},
+    {"dot(h, h)", 5},
+    {"max(..., FLT_MIN)", 1},
+    {"inversesqrt(...)", 1},
+    {"H = h * rsq (3 mul)", 3},
+    {"dot(N, H)", 5},
+    {"saturate(...)", 2},
+    {"nh2 = square(...)", 1},
+    {"dot(L, H)", 5},
+    {"saturate(...)", 2},
+    {"lh2 = square(...)", 1},
+    {"r2 = square(roughness)", 1},
+    {"r2 - 1.0", 1},
+    {"nh2 * (r2 - 1) + 1.00001 (FMA)", 2},
+    {"d2 = square(...)", 1},
+    {"max(0.1, lh2)", 1},
+    {"roughness * 4 + 2 (FMA)", 2},
+    {"d2 * ... * ... (2 mul)", 2},
+    {"r2 / ...", 1},
+    {"radiance * specularStrength (3 mul)", 3},
+    {"sums.specular += ... (3 add)", 3},
+};
+
+template <std::size_t N>
+constexpr int sumOf(const Step (&steps)[N]) {
   int total = 0;
-  for (const Step& s : kSteps) total += s.flops;
+  for (const Step& s : steps) total += s.flops;
   return total;
 }
+constexpr int sumOfSteps() { return sumOf(kSteps); }
 static_assert(sumOfSteps() == 45, "docs/performance.md's table says 45 flops per pixel-light");
+static_assert(sumOf(kSpecularSteps) == 46, "docs/performance.md's table says 46 more for the specular lobe");
 
 }  // namespace
 
 double flopsPerPixelLight() { return double(sumOfSteps()); }
+
+double flopsOfSpecularLobe() { return double(sumOf(kSpecularSteps)); }
 
 double measurePeakGflops(int repetitions) { return measurePeakRate(repetitions).gflops; }
 

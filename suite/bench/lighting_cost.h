@@ -9,6 +9,8 @@ namespace bench {
 // fragment stage (SPEC 3.2 as written in shaders/lighting.glsl), counted
 // per operation as docs/performance.md derives.
 double flopsPerPixelLight();
+// What SPEC 3.8's lobe adds to it per light on an srp material (46).
+double flopsOfSpecularLobe();
 
 // Measures the machine's single-precision FMA rate over every core (GFLOP/s),
 // with a calibrated kernel: the median of `repetitions` timed runs.

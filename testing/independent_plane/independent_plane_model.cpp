@@ -51,7 +51,10 @@ std::string sceneJson(const SceneSpec& s) {
   out << "  \"objects\": [{\"name\": \"plane\", \"mesh\": {\"type\": \"plane\", \"size\": [" << p.sizeX << ", "
       << p.sizeZ << "], \"subdivisions\": " << p.subdivisions << "}, \"transform\": {\"translate\": "
       << jsonVec(p.centre) << ", \"rotate_deg\": [0, 0, 0], \"scale\": 1}, \"material\": {\"albedo\": "
-      << jsonVec(p.albedo) << "}}],\n";
+      << jsonVec(p.albedo);
+  if (p.srp)
+    out << ", \"brdf\": \"srp\", \"metallic\": " << p.srp->metallic << ", \"smoothness\": " << p.srp->smoothness;
+  out << "}}],\n";
   out << "  \"lights\": [";
   for (std::size_t k = 0; k < s.lights.size(); ++k) {
     const LightSpec& l = s.lights[k];
@@ -192,6 +195,48 @@ Vec sumLights(const SceneSpec& s, const std::vector<int>& lights, const Vec& p, 
   return sum;
 }
 
+// ---------------------------------------------------------------------------
+// SPEC 3.8, line by line from the text
+
+Vec lightDirection(const LightSpec& l, const Vec& p) {
+  if (l.kind == Kind::Directional) return -glm::normalize(l.direction);  // 3.1: L = -direction
+  // 3.2: L = ray * inversesqrt(distSqr), distSqr = max(dot(ray, ray), 1e-5)
+  const Vec ray = l.position - p;
+  const double distSqr = std::max(glm::dot(ray, ray), 1e-5);
+  return ray * (1.0 / std::sqrt(distSqr));
+}
+
+Vec viewVector(const SceneSpec& s, const Vec& p) {
+  const CameraSpec& c = s.camera;
+  if (c.perspective) return glm::normalize(c.position - p);  // normalize(cameraPosition - p)
+  // The view direction is normalize(target - position) (lookAt, SPEC 1).
+  return -glm::normalize(c.target - c.position);
+}
+
+Vec srpDiffuse(const SrpMaterial& m, const Vec& albedo) {
+  const double oneMinusReflectivity = 0.96 * (1.0 - m.metallic);  // MIN_REFLECTIVITY 0.04
+  return albedo * oneMinusReflectivity;
+}
+
+SrpBrdf srpBrdf(const SrpMaterial& m, const Vec& albedo, const Vec& N, const Vec& L, const Vec& V) {
+  SrpBrdf b;
+  b.oneMinusReflectivity = 0.96 * (1.0 - m.metallic);
+  b.diffuse = albedo * b.oneMinusReflectivity;
+  // lerp(0.04, A, metallic) per channel: 0.04 + (A - 0.04) * metallic
+  for (int c = 0; c < 3; ++c) b.F0[c] = 0.04 + (albedo[c] - 0.04) * m.metallic;
+  b.roughness = square(1.0 - m.smoothness);
+  // SafeNormalize: the floor is FLT_MIN (1.17549435e-38), so L = -V gives H = 0.
+  const Vec sum = L + V;
+  b.H = sum * (1.0 / std::sqrt(std::max(glm::dot(sum, sum), 1.17549435e-38)));
+  b.nh2 = square(saturate(glm::dot(N, b.H)));
+  b.lh2 = square(saturate(glm::dot(L, b.H)));
+  b.r2 = square(b.roughness);
+  b.d2 = square(b.nh2 * (b.r2 - 1.0) + 1.00001);
+  b.specularStrength = b.r2 / (b.d2 * std::max(0.1, b.lh2) * (b.roughness * 4.0 + 2.0));
+  b.directBRDF = b.specularStrength * b.F0 + b.diffuse;
+  return b;
+}
+
 std::vector<Vec> vertexLightTerms(const SceneSpec& s, const std::vector<int>& lights, const Vec& p) {
   const PlaneSpec& plane = s.plane;
   const int n = plane.subdivisions;
@@ -255,6 +300,27 @@ std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLight
       const std::optional<Vec> p = hitPlane(s, pixelRay(s, i, j));
       if (!p) continue;  // background: 0
       pixel.onPlane = true;
+      if (s.plane.srp) {
+        // SPEC 3.8: sum of finalColor * saturate(dot(N, L)) * attenuation *
+        // directBRDF, plus diffuse * ambient. No vertex lights (legacy only).
+        EXPECT_TRUE(perVertex.empty()) << "srp materials have no vertex lights (SPEC 2: srp is an error in legacy)";
+        const SrpMaterial& m = *s.plane.srp;
+        const Vec V = viewVector(s, *p);
+        Vec value = srpDiffuse(m, albedo) * s.ambient;
+        for (int k : perPixel) {
+          const LightSpec& l = s.lights[k];
+          // finalColor * saturate(dot(N, L)) * attenuation
+          const Vec term = lightTerm(l, *p, N, s.profile == "legacy");
+          const SrpBrdf b = srpBrdf(m, albedo, N, lightDirection(l, *p), V);
+          const Vec contribution = term * b.directBRDF;
+          value += contribution;
+          pixel.specular += term * (b.specularStrength * b.F0);
+          pixel.largestLightContribution = std::max({pixel.largestLightContribution, std::abs(contribution.r),
+                                                     std::abs(contribution.g), std::abs(contribution.b)});
+        }
+        pixel.value = value;
+        continue;
+      }
       Vec light(0.0);
       for (int k : perPixel) {
         const Vec term = lightTerm(s.lights[k], *p, N, s.profile == "legacy");
@@ -451,12 +517,13 @@ PlaneCase legacyVertexLightsCase() {
 // ---------------------------------------------------------------------------
 // The reference renderer against the model
 
-reference::ReferenceImages renderReference(const SceneSpec& s, bool ideal) {
+reference::ReferenceImages renderReference(const SceneSpec& s, bool ideal, bool keepExactValues) {
   const lighting::Scene scene = lighting::loadSceneText(sceneJson(s), s.name + ".json");
   const auto prepared = lighting::prepareScene(scene);
   const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
   reference::ReferenceOptions options;
   options.ideal = ideal;
+  options.keepExactValues = keepExactValues;
   return reference::ReferenceRenderer(prepared).render(frame, options);
 }
 
@@ -541,6 +608,99 @@ ComparisonResult checkScene(const SceneSpec& s, const AppliedLights& applied, bo
   SCOPED_TRACE("scene " + s.name + (ideal ? " (--ideal)" : ""));
   const reference::ReferenceImages images = renderReference(s, ideal);
   return compareWithExpected(s, images, expectedImage(s, applied));
+}
+
+// ---------------------------------------------------------------------------
+// The reference's double values against the model, to 1e-9 relative
+
+namespace {
+
+constexpr double kExactRelativeTolerance = 1e-9;
+// The floor, 1e-7 of the image's largest value, i.e. an absolute allowance of
+// 1e-16 of it. Both evaluations find the hit point of a pixel centre in their
+// own way (a ray against the plane here, the rasterised triangle there), so p
+// differs by a few ulp of its coordinates (1e-16 relative). Terms that vanish at
+// a cone, range or grazing edge are a difference of nearly equal numbers there
+// (1 - square(distSqr * invRangeSq), dot(spotDir, L) * a + b, dot(N, L)), whose
+// absolute error is a few ulp of the unattenuated term, itself no larger than the
+// image's largest value; a pixel that such a remainder dominates cannot agree to
+// 1e-9 of itself, only to about 1e-16 of the image's scale. With metallic 1 there
+// is no ambient term (diffuse = 0) to keep a pixel away from 0 at those edges.
+constexpr double kExactFloorFraction = 1e-7;
+
+}  // namespace
+
+ComparisonResult compareExact(const SceneSpec& s, const reference::ReferenceImages& images,
+                              const std::vector<Vec>& expected) {
+  ComparisonResult result;
+  const imaging::Image& value = images.value;
+  const std::size_t count = std::size_t(s.width) * s.height;
+  EXPECT_EQ(value.width, s.width);
+  EXPECT_EQ(value.height, s.height);
+  EXPECT_EQ(value.channels, 4);
+  EXPECT_EQ(images.exactValue.size(), count) << "render with keepExactValues";
+  EXPECT_EQ(expected.size(), count);
+  if (value.width != s.width || value.height != s.height || value.channels != 4 || images.exactValue.size() != count ||
+      expected.size() != count)
+    return result;
+
+  double maxAbs = 0;
+  for (const Vec& v : expected) maxAbs = std::max({maxAbs, std::abs(v.r), std::abs(v.g), std::abs(v.b)});
+  const double floor = kExactFloorFraction * maxAbs;
+
+  int failures = 0, nonFinite = 0, badMask = 0, masked = 0;
+  double unfloored = 0;  // the largest |difference| / |expected| where expected != 0, for the log
+  int worstI = -1, worstJ = -1;
+  for (int j = 0; j < s.height; ++j)
+    for (int i = 0; i < s.width; ++i) {
+      const std::size_t k = std::size_t(j) * s.width + i;
+      const Vec& ref = images.exactValue[k];
+      for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(ref[c]) && ++nonFinite <= kReportedFailures)
+          ADD_FAILURE() << "pixel (" << i << ", " << j << ") channel " << c << ": exact value " << ref[c]
+                        << " is not finite";
+      const float mask = value.at(i, j, 3);
+      if (mask != 0.0f && mask != 1.0f && ++badMask <= kReportedFailures)
+        ADD_FAILURE() << "pixel (" << i << ", " << j << "): mask " << mask << " is neither 0 nor 1";
+      if (mask == 0.0f) {
+        ++masked;
+        continue;
+      }
+      ++result.compared;
+      const Vec& e = expected[k];
+      if (e != Vec(0.0)) ++result.lit;
+      for (int c = 0; c < 3; ++c) {
+        const double diff = std::abs(ref[c] - e[c]);
+        const double scale = std::max(std::abs(e[c]), floor);
+        const double relative = scale > 0 ? diff / scale : diff;
+        if (std::isfinite(relative)) result.maxRelative = std::max(result.maxRelative, relative);
+        if (e[c] != 0.0 && std::isfinite(diff / std::abs(e[c])) && diff / std::abs(e[c]) > unfloored) {
+          unfloored = diff / std::abs(e[c]);
+          worstI = i;
+          worstJ = j;
+        }
+        if (!(diff <= kExactRelativeTolerance * scale) && ++failures <= kReportedFailures)
+          ADD_FAILURE() << std::setprecision(17) << "pixel (" << i << ", " << j << ") channel " << c
+                        << ": reference (double) " << ref[c] << ", expected " << e[c] << ", difference " << diff
+                        << " (allowed " << kExactRelativeTolerance * scale << ", relative " << relative << ")";
+      }
+    }
+  EXPECT_EQ(failures, 0) << "channels outside 1e-9 relative (first " << kReportedFailures << " shown)";
+  EXPECT_EQ(nonFinite, 0);
+  EXPECT_EQ(badMask, 0);
+  EXPECT_LT(masked, kMaxMaskedFraction * s.width * s.height)
+      << masked << " of " << s.width * s.height << " pixels are masked on a plane scene";
+  std::printf(
+      "[ %s ] largest relative difference (double) %.3g (without the floor %.3g, pixel (%d, %d)) over %d compared "
+      "pixels (%d on the plane, %d masked)\n",
+      s.name.c_str(), result.maxRelative, unfloored, worstI, worstJ, result.compared, result.lit, masked);
+  return result;
+}
+
+ComparisonResult checkSceneExact(const SceneSpec& s, const AppliedLights& applied) {
+  SCOPED_TRACE("scene " + s.name + " (exact)");
+  const reference::ReferenceImages images = renderReference(s, false, /*keepExactValues=*/true);
+  return compareExact(s, images, expectedImage(s, applied));
 }
 
 }  // namespace independent_plane

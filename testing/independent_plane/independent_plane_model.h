@@ -1,13 +1,13 @@
-// An independent double-precision evaluation of SPEC sections 1 and 3 on plane
-// scenes, shared by the tests that check the CPU reference (SPEC 6) and the
-// rendering backends against it.
+// An independent double-precision evaluation of SPEC sections 1 and 3 (3.1-3.4
+// and the specular BRDF of 3.8) on plane scenes, shared by the tests that check
+// the CPU reference (SPEC 6) and the rendering backends against it.
 //
 // Independence is the point: nothing here calls the project's light math,
 // camera, transform, mesh, light evaluation or BVH. The camera rays, the
 // ray-plane intersection, the legacy triangulation and barycentrics, and every
-// formula of SPEC 3.1-3.4 are written out again from the text, and the lights
-// that reach the plane (SPEC 4 and 5) are chosen by hand per scene and written
-// down beside each scene builder. The only project code used is the scene
+// formula of SPEC 3.1-3.4 and 3.8 are written out again from the text, and the
+// lights that reach the plane (SPEC 4 and 5) are chosen by hand per scene and
+// written down beside each scene builder. The only project code used is the scene
 // loader, prepareScene/prepareFrame and, for the reference comparison, the
 // reference renderer under test.
 //
@@ -41,12 +41,22 @@ struct CameraSpec {
   double farPlane = 100;
 };
 
+// SPEC 2 `material.brdf: srp` (SPEC 3.8): metallic and smoothness in [0, 1].
+struct SrpMaterial {
+  double metallic = 0;
+  double smoothness = 0.5;
+};
+
 // An unrotated plane of scale 1: the surface y = centre.y, normal +Y.
 struct PlaneSpec {
   Vec centre{0, 0, 0};
   double sizeX = 10, sizeZ = 10;
   int subdivisions = 1;
   Vec albedo{1, 1, 1};
+  // Absent: `lambert` (SPEC 3.1-3.2 as written; nothing about the BRDF is
+  // written into the JSON). Present: `"brdf": "srp"` with its metallic and
+  // smoothness, evaluated by SPEC 3.8.
+  std::optional<SrpMaterial> srp;
 };
 
 enum class Kind { Directional, Point, Spot };
@@ -147,6 +157,32 @@ Vec lightTerm(const LightSpec& l, const Vec& p, const Vec& N, bool legacyInnerAl
 // The sum of lightTerm over `lights` (scene indices).
 Vec sumLights(const SceneSpec& s, const std::vector<int>& lights, const Vec& p, const Vec& N);
 
+// SPEC 3.8, written again from the text (see the .cpp for each line).
+
+// L of SPEC 3.1 (directional: -direction, normalised) or 3.2 (point, spot:
+// ray * inversesqrt(max(dot(ray, ray), 1e-5)), 0 when p == position).
+Vec lightDirection(const LightSpec& l, const Vec& p);
+
+// V of SPEC 3.8: perspective normalize(cameraPosition - p); orthographic the
+// unit vector opposite the view direction, normalize(position - target).
+Vec viewVector(const SceneSpec& s, const Vec& p);
+
+// Every intermediate of SPEC 3.8 for one material, albedo, N, L and V.
+struct SrpBrdf {
+  double oneMinusReflectivity = 0;
+  Vec diffuse{0.0};
+  Vec F0{0.0};
+  double roughness = 0;
+  Vec H{0.0};
+  double nh2 = 0, lh2 = 0, r2 = 0, d2 = 0;
+  double specularStrength = 0;
+  Vec directBRDF{0.0};  // specularStrength * F0 + diffuse
+};
+SrpBrdf srpBrdf(const SrpMaterial& m, const Vec& albedo, const Vec& N, const Vec& L, const Vec& V);
+
+// SPEC 3.8: diffuse = A * 0.96 * (1 - metallic), the factor of the ambient term.
+Vec srpDiffuse(const SrpMaterial& m, const Vec& albedo);
+
 // SPEC 2 plane triangulation and SPEC 4 vertex lights: the lights are
 // evaluated at the three corners of the triangle holding p (normal +Y) and
 // interpolated with p's barycentrics. One entry per light of `lights`.
@@ -162,13 +198,19 @@ struct ExpectedPixel {
   // The largest channel of the largest single light's contribution
   // albedo * lightTerm (per-pixel or interpolated vertex light); 0 off the plane.
   double largestLightContribution = 0;
+  // srp only (SPEC 3.8): the sum over the lights of the specular part,
+  // lightTerm * specularStrength * F0 (the rest of the value is diffuse * (ambient
+  // + sum of lightTerm)); 0 for lambert and off the plane.
+  Vec specular{0.0};
 };
 
 // Row-major, row 0 at the top, width * height entries.
 std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLights& applied);
 
 // SPEC 3: colour = A * ambient + A * (sum of the lights); no lightmap here.
-// Row-major values of expectedPixels.
+// srp (SPEC 3.8): colour = diffuse * ambient + sum of lightTerm * directBRDF,
+// per-pixel lights only (srp is an error in the legacy profile, the only one
+// with vertex lights). Row-major values of expectedPixels.
 std::vector<Vec> expectedImage(const SceneSpec& s, const AppliedLights& applied);
 
 // ---------------------------------------------------------------------------
@@ -231,7 +273,8 @@ PlaneCase legacyVertexLightsCase();
 // ---------------------------------------------------------------------------
 // The reference renderer (SPEC 6) against the model, to 1e-6 relative
 
-reference::ReferenceImages renderReference(const SceneSpec& s, bool ideal);
+// keepExactValues: also fill ReferenceImages::exactValue (the double colour).
+reference::ReferenceImages renderReference(const SceneSpec& s, bool ideal, bool keepExactValues = false);
 
 struct ComparisonResult {
   double maxRelative = 0;  // largest |reference - expected| / max(|expected|, floor)
@@ -249,5 +292,21 @@ ComparisonResult compareWithExpected(const SceneSpec& s, const reference::Refere
 // Renders the scene with the reference, evaluates it here with the lights
 // `applied`, compares.
 ComparisonResult checkScene(const SceneSpec& s, const AppliedLights& applied, bool ideal = false);
+
+// ---------------------------------------------------------------------------
+// The reference's double values (ReferenceImages::exactValue, rendered with
+// keepExactValues) against the model, to 1e-9 relative
+
+// Compares, in double, every pixel the reference's mask keeps (A = 1 in
+// images.value) with `expected` to 1e-9 relative, floored at 1e-7 of the image's
+// largest value (see the .cpp for why); checks that exactValue has one finite
+// entry per pixel and that fewer than 5% of the pixels are masked. Reports
+// through gtest failures.
+ComparisonResult compareExact(const SceneSpec& s, const reference::ReferenceImages& images,
+                              const std::vector<Vec>& expected);
+
+// Renders the scene with the reference (keepExactValues), evaluates it here
+// with the lights `applied`, compares with compareExact.
+ComparisonResult checkSceneExact(const SceneSpec& s, const AppliedLights& applied);
 
 }  // namespace independent_plane

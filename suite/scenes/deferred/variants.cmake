@@ -7,6 +7,7 @@
 # attenuation scene added later gets its variant too.
 set(deferred_variant_originals
   "attenuation/*.json"
+  "brdf/*.json"
   "shadowmask/strength-0-half-1.json")
 
 # The variant's "pipeline" member, added after "camera". An original must not
@@ -20,4 +21,7 @@ set(deferred_variant_buffer "hdr32")
 set(deferred_variant_intro "Deferred variant (light buffer <BUFFER>) of <ORIGINAL>: the same scene drawn through the G-buffer and one light volume per light, where the surface position comes from the stored window depth, not the rasteriser's interpolated position.")
 
 # Notes, per variant name (<group>-<name>): what else that variant checks.
+set(deferred_variant_note_brdf-metallic-1 "Here the light pass adds lights whose diffuse colour is 0: everything it adds is F0 times the lobe, read back from the G-buffer's material target.")
+set(deferred_variant_note_brdf-translated-1e5 "Here V comes from the position the light pass reconstructs from depth, camera-relative, so it too must not see the 1e5 offset.")
+set(deferred_variant_note_brdf-terms-srp "Here the G-buffer's base target carries ambient and lightmap times the BRDF's diffuse colour, and the material target metallic and smoothness for the light pass's lobes.")
 set(deferred_variant_note_shadowmask-strength-0-half-1 "Here the G-buffer's base target carries the lightmap (the demoted light) and its mask target the shadow mask, sampled where the fragment is, and the light pass applies each light's channel from it.")
