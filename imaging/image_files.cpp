@@ -60,6 +60,19 @@ Image readExr(const std::string& path) {
   return image;
 }
 
+Image readDataChannel(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw ImageFileError("cannot read " + path + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  const int channel = spec.alpha_channel >= 0 ? spec.alpha_channel : 0;
+  Image image(spec.width, spec.height, 1);
+  // Read as stored: OIIO converts UNORM levels to floats n / 255 and applies
+  // no colour transform unless asked to.
+  if (!in->read_image(0, 0, channel, channel + 1, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    throw ImageFileError("cannot read " + path + ": " + in->geterror());
+  return image;
+}
+
 void writePng8(const std::string& path, int width, int height, int channels, const std::vector<std::uint8_t>& bytes) {
   if (bytes.size() != std::size_t(width) * std::size_t(height) * std::size_t(channels))
     throw ImageFileError("cannot write " + path + ": " + std::to_string(bytes.size()) + " bytes for a " +

@@ -21,6 +21,12 @@ class ImageFileError : public std::runtime_error {
 void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);
 
+// One channel of a PNG or EXR as data (SPEC 3.10's cookies): the alpha
+// channel when the file has one, else the first; PNG's 8-bit levels n become
+// n / 255 exactly as stored (no sRGB decoding), row 0 at the top. Throws
+// ImageFileError naming the path for a missing or unreadable file.
+Image readDataChannel(const std::string& path);
+
 // 8-bit sRGB PNG for people: linear RGB tone-mapped with x / (1 + x) per
 // channel, then encoded with the sRGB transfer function. Alpha is dropped.
 void writePngPreview(const std::string& path, const Image& image);

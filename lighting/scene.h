@@ -4,6 +4,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,22 @@ struct Object {
 };
 
 enum class LightType { Directional, Point, Spot };
+
+// SPEC 2 and 3.10: a real-time light's cookie, its images read by the loader
+// (one channel each: the alpha channel when the file has one, else the
+// first; row 0 is v = 0). Directional: one image tiled every `size` metres;
+// spot: one image projected over the cone; point: a cube of six faces in the
+// order +X, -X, +Y, -Y, +Z, -Z, square and equal in size.
+struct CookieImage {
+  int width = 0, height = 0;
+  std::vector<float> texels;  // row-major, row 0 first
+  float at(int i, int j) const { return texels[std::size_t(j) * width + i]; }
+};
+struct Cookie {
+  std::vector<std::string> files;  // as resolved against the scene file's folder
+  std::vector<std::shared_ptr<const CookieImage>> images;  // 1, or 6 for a cube
+  double sizeX = 1, sizeY = 1;     // directional: the world size of one tile
+};
 enum class LightMode { Realtime, Mixed, Baked };
 enum class BakeFalloff { InverseSquared, InverseSquaredNoRange, Legacy };
 
@@ -83,6 +100,7 @@ struct Light {
   bool shadows = false;
   double shadowStrength = 1;
   BakeFalloff bakeFalloff = BakeFalloff::InverseSquared;
+  std::optional<Cookie> cookie;  // realtime lights only (SPEC 3.10)
 
   Vec3 finalColor() const { return color * intensity; }
 };

@@ -3,6 +3,8 @@
 // and range, and the rules SPEC leaves open that this file decides.
 #include "lighting/scene_loader.h"
 
+#include "imaging/image_files.h"
+
 #include "lighting/json_locations.h"
 #include "lighting/visible_lights.h"
 
@@ -169,9 +171,16 @@ constexpr std::array<std::string_view, 2> kBoxKeys{"type", "size"};
 constexpr std::array<std::string_view, 3> kTransformKeys{"translate", "rotate_deg", "scale"};
 constexpr std::array<std::string_view, 4> kMaterialKeys{"albedo", "brdf", "metallic", "smoothness"};
 constexpr std::array<std::string_view, 2> kAlbedoOnly{"albedo", "brdf"};
-constexpr std::array<std::string_view, 13> kLightKeys{
+constexpr std::array<std::string_view, 14> kLightKeys{
     "name",  "type",      "position", "direction", "range",  "spot_angle_deg",  "inner_spot_angle_deg",
-    "color", "intensity", "mode",     "shadows",   "shadow_strength", "bake_falloff"};
+    "color", "intensity", "mode",     "shadows",   "shadow_strength", "bake_falloff", "cookie"};
+constexpr std::array<std::string_view, 3> kCookieKeys{"image", "size", "cube"};
+constexpr std::array<std::string_view, 2> kDirectionalCookieKeys{"image", "size"};
+constexpr std::array<std::string_view, 1> kSpotCookieKeys{"image"};
+constexpr std::array<std::string_view, 1> kPointCookieKeys{"cube"};
+// SPEC 2: a cookie needs a spot no wider than this (the projection's tangent).
+constexpr double kWidestCookieSpotDeg = 170;
+constexpr std::size_t kCubeFaces = 6;
 constexpr std::array<std::string_view, 2> kFramesKeys{"count", "camera_path"};
 constexpr std::array<std::string_view, 2> kKeyframeKeys{"position", "target"};
 constexpr std::array<std::string_view, 4> kExpectKeys{"tolerance_scale", "max_failing_pixels", "expect_fail",
@@ -610,6 +619,7 @@ class SceneReader {
     if (auto shadows = member(node, "shadows")) light.shadows = readBool(*shadows);
     if (auto strength = member(node, "shadow_strength")) light.shadowStrength = readNumber(*strength, closed(0, 1));
     if (auto falloff = member(node, "bake_falloff")) light.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
+    if (auto cookie = member(node, "cookie")) light.cookie = readCookie(*cookie, light);
     return light;
   }
 
@@ -628,6 +638,79 @@ class SceneReader {
   }
 
   // SPEC 2: the outer angle in (0, 180]; the inner one in [0, outer], optional (3.4).
+  // SPEC 2 and 3.10: the cookie's keys by light type, its files read now, so
+  // a bad file is a scene error (exit 2) naming the JSON path and the file.
+  Cookie readCookie(const Node& node, const Light& light) const {
+    expectObject(node);
+    if (light.mode != LightMode::Realtime) {
+      fail(node, "a cookie needs a realtime light (SPEC 2); this light is " +
+                     std::string(choiceName(kLightModes, light.mode)));
+    }
+    const std::string type(choiceName(kLightTypes, light.type));
+    const OtherVariants others{kCookieKeys, "a " + type + " light's cookie"};
+    Cookie cookie;
+    switch (light.type) {
+      case LightType::Directional: {
+        checkKeys(node, kDirectionalCookieKeys, &others);
+        requireMember(node, "image");
+        requireMember(node, "size");
+        readCookieImage(*member(node, "image"), cookie);
+        const Node size = *member(node, "size");
+        if (!size.value.is_array() || size.value.size() != 2)
+          fail(size, "expected [w, h], an array of 2 numbers, got " + describeArrayOrType(size.value));
+        cookie.sizeX = readNumber({size.value[0], size.pointer + "/0"}, above(0));
+        cookie.sizeY = readNumber({size.value[1], size.pointer + "/1"}, above(0));
+        break;
+      }
+      case LightType::Spot:
+        checkKeys(node, kSpotCookieKeys, &others);
+        requireMember(node, "image");
+        if (light.spotAngleDeg > kWidestCookieSpotDeg)
+          fail(node, "a spot cookie needs spot_angle_deg <= 170 (SPEC 2), this spot has " +
+                         formatNumber(light.spotAngleDeg));
+        readCookieImage(*member(node, "image"), cookie);
+        break;
+      case LightType::Point: {
+        checkKeys(node, kPointCookieKeys, &others);
+        requireMember(node, "cube");
+        const Node cube = *member(node, "cube");
+        if (!cube.value.is_array() || cube.value.size() != kCubeFaces)
+          fail(cube, "expected the six faces [+X, -X, +Y, -Y, +Z, -Z], got " + describeArrayOrType(cube.value));
+        for (std::size_t f = 0; f < kCubeFaces; ++f) {
+          const Node face{cube.value[f], cube.pointer + "/" + std::to_string(f)};
+          readCookieImage(face, cookie);
+          const CookieImage& image = *cookie.images.back();
+          const CookieImage& first = *cookie.images.front();
+          if (image.width != image.height)
+            fail(face, "cube face '" + cookie.files.back() + "' is " + std::to_string(image.width) + "x" +
+                           std::to_string(image.height) + "; cube faces must be square");
+          if (image.width != first.width)
+            fail(face, "cube face '" + cookie.files.back() + "' is " + std::to_string(image.width) +
+                           " texels wide, face 0 is " + std::to_string(first.width) + "; the faces must be equal");
+        }
+        break;
+      }
+    }
+    return cookie;
+  }
+
+  void readCookieImage(const Node& node, Cookie& cookie) const {
+    const std::string name = readString(node);
+    const std::filesystem::path resolved = std::filesystem::path(file_).parent_path() / name;
+    imaging::Image read;
+    try {
+      read = imaging::readDataChannel(resolved.string());
+    } catch (const imaging::ImageFileError& error) {
+      fail(node, "cannot read the cookie image '" + resolved.string() + "' (PNG or EXR): " + error.what());
+    }
+    auto image = std::make_shared<CookieImage>();
+    image->width = read.width;
+    image->height = read.height;
+    image->texels = std::move(read.pixels);
+    cookie.files.push_back(resolved.string());
+    cookie.images.push_back(std::move(image));
+  }
+
   void readSpotAngles(const Node& node, Light& light) const {
     if (auto outer = member(node, "spot_angle_deg")) light.spotAngleDeg = readNumber(*outer, {0, true, 180, false});
     if (auto inner = member(node, "inner_spot_angle_deg")) {
@@ -780,6 +863,12 @@ Scene loadSceneText(std::string_view text, const std::string& sourceName) {
   Scene scene = SceneReader(text, sourceName).readScene(document);
   scene.sourcePath = sourceName;
   return scene;
+}
+
+std::optional<std::string> featureNotRenderedYet(const Scene& scene) {
+  for (const Light& light : scene.lights)
+    if (light.cookie) return "light '" + light.name + "' has a cookie (SPEC 3.10), which no renderer draws yet";
+  return std::nullopt;
 }
 
 std::string_view deferredBufferName(DeferredBuffer buffer) { return choiceName(kDeferredBuffers, buffer); }
