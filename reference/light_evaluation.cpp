@@ -1,5 +1,6 @@
 #include "reference/light_evaluation.h"
 
+#include "reference/cookie_bound.h"
 #include "reference/specular_bound.h"
 #include "reference/tolerance_model.h"
 
@@ -32,11 +33,19 @@ LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::v
       p.shadowMaskChannel = shadowMaskChannels[i];
       p.shadowStrength = l.shadowStrength;
     }
+    if (l.cookie && l.mode == LightMode::Realtime) p.cookieLight = &l;
     lights_.push_back(p);
   }
 }
 
 namespace {
+
+// SPEC 3.10: the radiance `term` (bound `termBound`) times the light's cookie
+// at p, whose float32 lookup is off by at most cookie.errorBound.
+void applyCookie(const CookieBound& cookie, Vec3& term, Vec3& termBound) {
+  termBound = termBound * cookie.value + term * cookie.errorBound + term * (cookie.value * tol::kUnitRoundoff);
+  term *= cookie.value;
+}
 
 // SPEC 3.8: the light's radiance `term` (bound `termBound`) times the lobe in
 // direction L, whose float32 direction error is `lightError`.
@@ -74,12 +83,20 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     if (light.directional) {
       // SPEC 3.1: A * finalColor * saturate(dot(N, L)) * shadowMask.
       const double nl = saturate(glm::dot(N, light.towardLight));
-      const Vec3 term = light.finalColor * (nl * shadowMask);
+      Vec3 term = light.finalColor * (nl * shadowMask);
+      Vec3 termBound = term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
+                       light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
+      if (light.cookieLight) {
+        // The tiling is anchored at the world origin; a camera-relative
+        // lookup adds the camera's share in double (docs/tolerances.md "Cookies").
+        const double distance = glm::length(p - where.camera);
+        const double positionError = tol::kPositionRoundingSteps * u * pointMagnitude + where.reconstructionError +
+                                     tol::kCookieCoordinateSteps * u * distance;
+        applyCookie(cookieWithBound(*light.cookieLight, p, positionError), term, termBound);
+      }
       sum.value += term;
       sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
       absoluteSum += term;
-      const Vec3 termBound = term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
-                             light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
       sum.errorBound += termBound;
       // L = float(-direction): one rounding per component, in length and direction.
       const VectorError uploaded{tol::kNormalizedDirectionSteps * u, tol::kNormalizedDirectionSteps * u};
@@ -102,10 +119,7 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double s = saturate(glm::dot(light.spotDirection, L) * light.spot.a + light.spot.b);
     const double spotAtt = s * s;
     const double falloff = shadowMask * rangeAtt / distSqr;
-    const Vec3 term = light.finalColor * (nl * spotAtt * falloff);
-    sum.value += term;
-    sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
-    absoluteSum += term;
+    Vec3 term = light.finalColor * (nl * spotAtt * falloff);
 
     // First-order error of the same formula in float32 (docs/tolerances.md):
     // the ray is off by the position error of both ends; that turns L by up
@@ -123,8 +137,15 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double fromRange = nl * spotAtt * shadowMask / distSqr * 4.0 * g * q * q * distSqrRelError;
     // The mask's filtering error acts on the unmasked term.
     const double fromMask = nl * spotAtt * rangeAtt / distSqr * shadowMaskError;
-    const Vec3 termBound = light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +
-                           term * maskRounding;
+    Vec3 termBound = light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +
+                     term * maskRounding;
+    if (light.cookieLight) {
+      const double positionError = rayError + tol::kCookieCoordinateSteps * u * distance;
+      applyCookie(cookieWithBound(*light.cookieLight, p, positionError), term, termBound);
+    }
+    sum.value += term;
+    sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
+    absoluteSum += term;
     sum.errorBound += termBound;
     // L = ray * inversesqrt(distSqr): the ray's turn plus the normalisation.
     const VectorError lightError{tol::kNormalizedLengthSteps * u,

@@ -85,6 +85,7 @@ class LightEvaluator {
     lighting::SpotFactors spot;
     int shadowMaskChannel = -1;  // SPEC 3.5: c, or -1 (no channel, or strength 0)
     double shadowStrength = 0;
+    const lighting::Light* cookieLight = nullptr;  // SPEC 3.10: the light, when it has a cookie
   };
   std::vector<Prepared> lights_;
 };

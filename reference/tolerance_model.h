@@ -199,6 +199,15 @@ constexpr double kSpecularColourSteps = 6;
 // (2): relative to the specular part.
 constexpr double kSpecularTermSteps = 3;
 
+// --- Cookies (SPEC 3.10; docs/tolerances.md "Cookies") ---
+
+// The cookie coordinate in float32, as a position error in units of u times
+// the distance it is measured over (|p - light| for spot and point, |p -
+// camera| for directional): the basis dot products (5 operations), the
+// divide by the tile size or q.z tan (2.5 ULP = 5u... rounded into 8 with
+// the 0.5 + 0.5 x of the spot).
+constexpr double kCookieCoordinateSteps = 8;
+
 // --- The combination ---
 
 // The formula at the top of this file, per channel, for a pixel whose shaded
