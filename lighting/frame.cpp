@@ -39,6 +39,7 @@ ShaderFeatures featuresOf(const Frame& frame) {
   f.shadowMask = anyMask && anyChannel;
   f.lightmap = anyMask;
   for (const Object& o : scene.objects) f.specularBrdf |= o.brdf == Brdf::Srp;
+  f.cookies = frame.cookies.any();
   return f;
 }
 
@@ -120,6 +121,7 @@ Frame prepareFrame(std::shared_ptr<const PreparedScene> prepared, int index) {
     for (const ObjectGeometry& g : frame.prepared->objects) bounds.push_back(g.bounds);
     frame.objectLists = buildObjectLightLists(scene, frame.selection, bounds);
   }
+  frame.cookies = assignCookieSlots(scene, frame.selection);
   frame.features = featuresOf(frame);
   return frame;
 }

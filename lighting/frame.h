@@ -6,6 +6,7 @@
 
 #include "lighting/baked_lighting.h"
 #include "lighting/camera_view.h"
+#include "lighting/cookie_slots.h"
 #include "lighting/mesh.h"
 #include "lighting/object_light_lists.h"
 #include "lighting/scene.h"
@@ -56,6 +57,7 @@ struct ShaderFeatures {
   bool ldr8Buffer = false;     // deferred path with the ldr8 light buffer (SPEC 3.7)
   bool ambient = false;
   bool specularBrdf = false;   // some object has the srp BRDF (SPEC 3.8)
+  bool cookies = false;        // some kept light has a cookie (SPEC 3.10)
 };
 
 // The lights that shade one object, as scene light indices.
@@ -71,6 +73,7 @@ struct Frame {
   LightSelection selection;
   std::vector<ObjectLightList> objectLists;  // empty when per-object lists are not in use
   ShaderFeatures features;
+  CookieSlots cookies;  // SPEC 3.10: the kept lights' cookies and their texture slots
 
   const Scene& scene() const { return prepared->scene; }
   // False on the deferred path: it lights every kept light per pixel.
