@@ -25,7 +25,9 @@ struct CookieCoordinates {
 };
 CookieCoordinates cookieCoordinates(const Light& light, const Vec3& p);
 
-// The cube face a direction selects (its major axis; ties go to x, then y)
+// The cube face a direction selects (its major axis; ties go to x, then y:
+// Vulkan recommends z, then y, and allows any fixed rule, so at a tie the
+// tolerance admits either face, reference/cookie_bound.cpp)
 // and its (u, v), by the table Vulkan and OpenGL share.
 CookieCoordinates cubeCoordinates(const Vec3& direction);
 
