@@ -10,21 +10,27 @@
 namespace app {
 
 // SPEC 8: DIR/reference.exr (RGB value, A mask), DIR/tolerance.exr (RGB), and
-// a tone-mapped sRGB preview DIR/reference.png for people.
-int runReferenceCommand(const SceneArguments& args, bool ideal, const std::string& outDir, std::ostream& out,
-                        std::ostream& err) {
+// a tone-mapped sRGB preview DIR/reference.png for people; with
+// --tolerance-terms the tolerance's two parts as well (docs/tolerances.md).
+int runReferenceCommand(const SceneArguments& args, bool ideal, bool toleranceTerms, const std::string& outDir,
+                        std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     const SceneInput input = loadSceneInput(args);
     makeOutputDirectory(outDir);
     const reference::ReferenceRenderer renderer(input.prepared);
     reference::ReferenceOptions options;
     options.ideal = ideal;
+    options.keepToleranceTerms = toleranceTerms;
     options.bakedLightsRealtime = input.frame.scene().expect.against == lighting::CompareAgainst::Realtime;  // as compare does
     const reference::ReferenceImages images = renderer.render(input.frame, options);
     const std::filesystem::path dir(outDir);
     imaging::writeExr((dir / "reference.exr").string(), images.value);
     imaging::writeExr((dir / "tolerance.exr").string(), images.tolerance);
     imaging::writePngPreview((dir / "reference.png").string(), images.value);
+    if (toleranceTerms) {
+      imaging::writeExr((dir / "tolerance-arithmetic.exr").string(), images.toleranceArithmetic);
+      imaging::writeExr((dir / "tolerance-shift.exr").string(), images.toleranceShift);
+    }
     out << "reference: " << input.frame.scene().name << " frame " << args.frame << (ideal ? " (ideal)" : "") << ": "
         << images.value.width << "x" << images.value.height << ", " << images.maskedPixels
         << " pixel(s) masked, written to " << outDir << "\n";

@@ -28,7 +28,9 @@ int runBackendsCommand(const std::string& driver, std::ostream& out, std::ostrea
 int runProbeDriverCommand(const std::string& backend, const std::string& driver, std::ostream& out,
                           std::ostream& err);
 int runLightsCommand(const SceneArguments& args, std::ostream& out, std::ostream& err);
-int runReferenceCommand(const SceneArguments& args, bool ideal, const std::string& outDir,
+// `toleranceTerms` (extension, docs/cli.md): also DIR/tolerance-arithmetic.exr
+// and DIR/tolerance-shift.exr, the two parts of tolerance.exr.
+int runReferenceCommand(const SceneArguments& args, bool ideal, bool toleranceTerms, const std::string& outDir,
                         std::ostream& out, std::ostream& err);
 
 struct BackendArguments {

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   app::BackendArguments backend;
   std::string out;
   bool ideal = false;
+  bool toleranceTerms = false;
   runner::RunOptions run;
   std::string workerPlan;
   int workerStart = 0;
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
   auto* referenceCmd = cli.add_subcommand("reference", "Write reference, tolerance and mask images (EXR)");
   addScene(referenceCmd, true);
   referenceCmd->add_flag("--ideal", ideal, "No budgets: every non-baked light per pixel (SPEC 6)");
+  referenceCmd->add_flag("--tolerance-terms", toleranceTerms,
+                         "Also write tolerance-arithmetic.exr and tolerance-shift.exr, the two parts of tolerance.exr");
   referenceCmd->add_option("--out", out, "Output folder")->required();
   auto* renderCmd = cli.add_subcommand("render", "Render a scene on a backend to an RGBA float EXR");
   addScene(renderCmd, true);
@@ -144,7 +147,7 @@ int main(int argc, char** argv) {
   if (*backendsCmd) return app::runBackendsCommand(backendsDriver, o, e);
   if (*probeDriverCmd) return app::runProbeDriverCommand(probeBackend, probeDriver, o, e);
   if (*lightsCmd) return app::runLightsCommand(scene, o, e);
-  if (*referenceCmd) return app::runReferenceCommand(scene, ideal, out, o, e);
+  if (*referenceCmd) return app::runReferenceCommand(scene, ideal, toleranceTerms, out, o, e);
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
   scene.frameGiven = compareCmd->get_option("--frame")->count() > 0;
   if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);

@@ -296,6 +296,10 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
   out.value = imaging::Image(width, height, 4);
   out.tolerance = imaging::Image(width, height, 3);
   if (options.keepExactValues) out.exactValue.assign(std::size_t(width) * height, Vec3(0.0));
+  if (options.keepToleranceTerms) {
+    out.toleranceArithmetic = imaging::Image(width, height, 3);
+    out.toleranceShift = imaging::Image(width, height, 3);
+  }
   std::atomic<std::int64_t> evaluations{0}, masked{0};
 
   forEachRow(height, options.threads, [&](int j) {
@@ -351,6 +355,13 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
       }
       const Vec3 tolerance = tol::pixelTolerance(value, bound, shiftChange, interpolation);
       if (options.keepExactValues) out.exactValue[k] = value;
+      if (options.keepToleranceTerms) {
+        const Vec3 arithmetic = tol::pixelTolerance(value, bound, Vec3(0.0), interpolation);
+        for (int c = 0; c < 3; ++c) {
+          out.toleranceArithmetic.at(i, j, c) = float(arithmetic[c]);
+          out.toleranceShift.at(i, j, c) = float(shiftChange[c]);
+        }
+      }
       for (int c = 0; c < 3; ++c) {
         out.value.at(i, j, c) = float(value[c]);
         out.tolerance.at(i, j, c) = float(tolerance[c]);

@@ -28,6 +28,9 @@ struct ReferenceOptions {
   // Also return every pixel's double value (ReferenceImages::exactValue), for
   // tests that check the model to more digits than the float image holds.
   bool keepExactValues = false;
+  // Also return the tolerance's two parts (ReferenceImages::toleranceArithmetic,
+  // toleranceShift), to see which dominates where (docs/tolerances.md).
+  bool keepToleranceTerms = false;
 };
 
 struct ReferenceImages {
@@ -38,6 +41,11 @@ struct ReferenceImages {
   // keepExactValues only: row-major, row 0 at the top, the double colour of
   // each pixel before any rounding (background 0); empty otherwise.
   std::vector<glm::dvec3> exactValue;
+  // keepToleranceTerms only (RGB, else empty): the sub-pixel-shift term
+  // (section 2 of docs/tolerances.md) and everything else, the arithmetic,
+  // filtering, buffer and storage bounds; they sum to `tolerance`.
+  imaging::Image toleranceArithmetic;
+  imaging::Image toleranceShift;
 };
 
 // Built once per scene (world triangles and BVH), then renders any frame of it.

@@ -132,6 +132,30 @@ TEST(ReferenceRenderer, FlatShadingHasOnlyArithmeticTolerance) {
   EXPECT_GT(img.tolerance.at(16, 12, 0), 0.0f);
 }
 
+// --tolerance-terms: the tolerance's two parts sum to it (within the float
+// rounding of each image), and a point light's gradient gives a shift term.
+TEST(ReferenceRenderer, ToleranceTermsSumToTheTolerance) {
+  Scene s = smallScene();
+  s.objects.push_back(plane(20));
+  s.lights.push_back(point({0.3, 0.7, 0.2}, 4, 3));
+  auto prepared = prepareScene(s);
+  ReferenceOptions options;
+  options.keepToleranceTerms = true;
+  const ReferenceImages img = ReferenceRenderer(prepared).render(prepareFrame(prepared, 0), options);
+  ASSERT_EQ(img.toleranceArithmetic.width, img.tolerance.width);
+  ASSERT_EQ(img.toleranceShift.height, img.tolerance.height);
+  int withShift = 0;
+  for (int j = 0; j < img.tolerance.height; ++j)
+    for (int i = 0; i < img.tolerance.width; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const double sum = double(img.toleranceArithmetic.at(i, j, c)) + img.toleranceShift.at(i, j, c);
+        EXPECT_NEAR(sum, img.tolerance.at(i, j, c), 1e-6 * img.tolerance.at(i, j, c));
+        withShift += img.toleranceShift.at(i, j, c) > 0 ? 1 : 0;
+      }
+  EXPECT_GT(withShift, 0);
+  EXPECT_TRUE(render(s).toleranceShift.pixels.empty()) << "only when asked";
+}
+
 TEST(ReferenceRenderer, IdealIgnoresTheBudget) {
   // 65 lights: the budgeted image drops the farthest (light 64 at the corner),
   // the ideal one does not.
