@@ -81,7 +81,7 @@ TEST_F(CommandsTest, LightsPrintsTheSpecJson) {
 TEST_F(CommandsTest, ReferenceWritesExrAndPreview) {
   const std::string scene = writeScene(kSelectionScene);
   const std::string out = (dir_ / "ref").string();
-  ASSERT_EQ(runReferenceCommand({scene, 0}, false, out, out_, err_), kExitSuccess) << err_.str();
+  ASSERT_EQ(runReferenceCommand({scene, 0}, false, false, out, out_, err_), kExitSuccess) << err_.str();
   const imaging::Image value = imaging::readExr(out + "/reference.exr");
   const imaging::Image tolerance = imaging::readExr(out + "/tolerance.exr");
   EXPECT_EQ(value.channels, 4);  // RGB value, A mask
@@ -91,6 +91,23 @@ TEST_F(CommandsTest, ReferenceWritesExrAndPreview) {
   EXPECT_TRUE(fs::exists(out + "/reference.png"));
   // No temporary files are left behind.
   for (const auto& entry : fs::directory_iterator(out)) EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos);
+}
+
+// --tolerance-terms (docs/cli.md): the tolerance's two parts beside it, and
+// only when asked.
+TEST_F(CommandsTest, ReferenceWritesToleranceTermsOnlyWhenAsked) {
+  const std::string scene = writeScene(kSelectionScene);
+  const std::string plain = (dir_ / "plain").string(), terms = (dir_ / "terms").string();
+  ASSERT_EQ(runReferenceCommand({scene, 0}, false, false, plain, out_, err_), kExitSuccess) << err_.str();
+  EXPECT_FALSE(fs::exists(plain + "/tolerance-shift.exr"));
+  ASSERT_EQ(runReferenceCommand({scene, 0}, false, true, terms, out_, err_), kExitSuccess) << err_.str();
+  const imaging::Image tolerance = imaging::readExr(terms + "/tolerance.exr");
+  const imaging::Image arithmetic = imaging::readExr(terms + "/tolerance-arithmetic.exr");
+  const imaging::Image shift = imaging::readExr(terms + "/tolerance-shift.exr");
+  ASSERT_EQ(arithmetic.pixels.size(), tolerance.pixels.size());
+  ASSERT_EQ(shift.pixels.size(), tolerance.pixels.size());
+  for (std::size_t k = 0; k < tolerance.pixels.size(); ++k)
+    EXPECT_NEAR(double(arithmetic.pixels[k]) + shift.pixels[k], tolerance.pixels[k], 1e-6 * tolerance.pixels[k]);
 }
 
 TEST_F(CommandsTest, BadSceneExitsTwoNamingThePath) {
@@ -105,7 +122,7 @@ TEST_F(CommandsTest, BadSceneExitsTwoNamingThePath) {
 TEST_F(CommandsTest, BadSceneWritesNoReferenceFiles) {
   const std::string scene = writeScene("{\"lightcts\": 1}");
   const std::string out = (dir_ / "ref").string();
-  EXPECT_EQ(runReferenceCommand({scene, 0}, false, out, out_, err_), kExitBadInput);
+  EXPECT_EQ(runReferenceCommand({scene, 0}, false, false, out, out_, err_), kExitBadInput);
   EXPECT_FALSE(fs::exists(out + "/reference.exr"));
 }
 
@@ -132,7 +149,7 @@ TEST_F(CommandsTest, UnwritableOutputExitsTwo) {
   const std::string scene = writeScene(kSelectionScene);
   const std::string blocker = (dir_ / "file").string();
   std::ofstream(blocker) << "x";
-  EXPECT_EQ(runReferenceCommand({scene, 0}, false, blocker + "/sub", out_, err_), kExitBadInput);
+  EXPECT_EQ(runReferenceCommand({scene, 0}, false, false, blocker + "/sub", out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("cannot create output folder"), std::string::npos) << err_.str();
 }
 
