@@ -21,10 +21,6 @@ SceneInput loadSceneInput(const SceneArguments& args, bool bake) {
                      std::to_string(count) + " frame(s), 0.." + std::to_string(count - 1));
   // Scenes with lightmaps are baked here (or read from the bake cache), so
   // every command renders them with their maps (SPEC 3.6).
-  // Every command that renders bakes (`lights` does neither): those refuse
-  // a scene that asks for something no renderer draws yet.
-  if (bake)
-    if (const auto missing = lighting::featureNotRenderedYet(scene)) throw backends::NotSupportedError(*missing);
   input.prepared = bake ? baking::prepareBakedScene(std::move(scene)) : lighting::prepareScene(std::move(scene));
   input.frame = lighting::prepareFrame(input.prepared, args.frame);
   return input;

@@ -96,6 +96,8 @@ CookieCoordinates cubeCoordinates(const Vec3& d) {
   return c;
 }
 
+double spotCookieScale(const Light& spot) { return 0.5 / std::tan(spot.spotAngleDeg * std::numbers::pi / 360.0); }
+
 CookieCoordinates cookieCoordinates(const Light& light, const Vec3& p) {
   CookieCoordinates c;
   if (!light.cookie) return c;
@@ -114,7 +116,7 @@ CookieCoordinates cookieCoordinates(const Light& light, const Vec3& p) {
         c.outside = true;
         return c;
       }
-      const double scale = 0.5 / (qz * std::tan(light.spotAngleDeg * std::numbers::pi / 360.0));
+      const double scale = spotCookieScale(light) / qz;
       c.u = 0.5 + glm::dot(d, b.r) * scale;
       c.v = 0.5 + glm::dot(d, b.u) * scale;
       return c;
@@ -162,8 +164,12 @@ double cookieValue(const Light& light, const Vec3& p) {
   if (!light.cookie) return 1.0;
   const CookieCoordinates at = cookieCoordinates(light, p);
   if (at.outside) return 0.0;
+  return blendTaps(*light.cookie, cookieTaps(light, at));
+}
+
+double blendTaps(const Cookie& cookie, const std::array<CookieTap, 4>& taps) {
   double value = 0;
-  for (const CookieTap& tap : cookieTaps(light, at)) value += tap.weight * tapValue(*light.cookie, tap);
+  for (const CookieTap& tap : taps) value += tap.weight * tapValue(cookie, tap);
   return value;
 }
 

@@ -25,6 +25,9 @@ struct CookieCoordinates {
 };
 CookieCoordinates cookieCoordinates(const Light& light, const Vec3& p);
 
+// A spot cookie's uv = 0.5 + scale q.xy / q.z: scale = 0.5 / tan(spot_angle / 2).
+double spotCookieScale(const Light& spot);
+
 // The cube face a direction selects (its major axis; ties go to x, then y:
 // Vulkan recommends z, then y, and allows any fixed rule, so at a tie the
 // tolerance admits either face, reference/cookie_bound.cpp)
@@ -44,6 +47,9 @@ std::array<CookieTap, 4> cookieTaps(const Light& light, const CookieCoordinates&
 // The value of one tap: its texel, or at a cube corner the mean of the three
 // texels that meet there (the reference's choice; the tolerance admits any of them).
 double tapValue(const Cookie& cookie, const CookieTap& tap);
+
+// The bilinear blend of the four taps.
+double blendTaps(const Cookie& cookie, const std::array<CookieTap, 4>& taps);
 
 // SPEC 3.10: the cookie's value at p (1 for a light without one).
 double cookieValue(const Light& light, const Vec3& p);

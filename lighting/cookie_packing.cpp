@@ -3,17 +3,9 @@
 #include "lighting/cookie.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace lighting {
 namespace {
-
-GpuMat4 toGpu(const glm::dmat4& m) {
-  GpuMat4 out;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) out.m[c * 4 + r] = float(m[c][r]);
-  return out;
-}
 
 // The map of one light, in double.
 glm::dmat4 toCookieSpace(const Frame& frame, const Light& light) {
@@ -55,12 +47,11 @@ glm::dmat4 toCookieSpace(const Frame& frame, const Light& light) {
 GpuCookie packCookie(const Frame& frame, int sceneLight, int textureIndex) {
   const Light& light = frame.scene().lights[sceneLight];
   GpuCookie g;
-  g.toCookie = toGpu(toCookieSpace(frame, light));
+  g.toCookie = toGpuMat4(toCookieSpace(frame, light));
   const GpuCookieKind kind = light.type == LightType::Directional ? GpuCookieKind::Directional
                              : light.type == LightType::Spot      ? GpuCookieKind::Spot
                                                                   : GpuCookieKind::Point;
-  const double spotScale =
-      light.type == LightType::Spot ? 0.5 / std::tan(light.spotAngleDeg * std::numbers::pi / 360.0) : 0.0;
+  const double spotScale = light.type == LightType::Spot ? spotCookieScale(light) : 0.0;
   g.params = {float(int(kind)), float(spotScale), float(textureIndex), 0.0f};
   return g;
 }

@@ -125,13 +125,6 @@ std::vector<GpuVec4> fullScreenTriangle() {
   return {{-1, -1, 0.5f, 1}, {3, -1, 0.5f, 1}, {-1, 3, 0.5f, 1}};
 }
 
-GpuMat4 toGpu(const glm::dmat4& m) {
-  GpuMat4 out;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) out.m[c * 4 + r] = float(m[c][r]);
-  return out;
-}
-
 // The kept lights in packed order with their fade weights.
 std::vector<std::pair<int, double>> keptLights(const Frame& frame) {
   const PackedLights& packed = frame.selection.packed;
@@ -187,7 +180,7 @@ GpuDeferredLightBlock packDeferredLight(const Frame& frame, int sceneLight) {
 
 GpuDeferredFrameBlock packDeferredFrame(const Frame& frame) {
   GpuDeferredFrameBlock block;
-  block.inverseViewProjection = toGpu(glm::inverse(frame.view.cameraRelativeViewProjection()));
+  block.inverseViewProjection = toGpuMat4(glm::inverse(frame.view.cameraRelativeViewProjection()));
   const DeferredBuffer buffer = frame.scene().pipeline.deferredBuffer;
   block.buffer = {buffer == DeferredBuffer::Hdr32 ? 0 : buffer == DeferredBuffer::Hdr16 ? 1 : 2, 0, 0, 0};
   return block;

@@ -9,14 +9,14 @@ GpuVec4 vec4(const Vec3& v, double w) {
   return {float(v.x), float(v.y), float(v.z), float(w)};
 }
 
-GpuMat4 mat4(const glm::dmat4& m) {
+}  // namespace
+
+GpuMat4 toGpuMat4(const glm::dmat4& m) {
   GpuMat4 out;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) out.m[c * 4 + r] = float(m[c][r]);
   return out;
 }
-
-}  // namespace
 
 GpuLight packGpuLight(const Frame& frame, int lightIndex, double weight) {
   const Scene& scene = frame.scene();
@@ -40,7 +40,7 @@ GpuLight packGpuLight(const Frame& frame, int lightIndex, double weight) {
 
 GpuFrameBlock packFrameBlock(const Frame& frame) {
   GpuFrameBlock block;
-  block.viewProjection = mat4(frame.view.cameraRelativeViewProjection());
+  block.viewProjection = toGpuMat4(frame.view.cameraRelativeViewProjection());
   block.ambient = vec4(frame.scene().ambient, 0.0);
   block.cameraPosition = vec4(frame.view.camera.position, 1.0);  // test-only (the absolute-coordinates mutants)
   const bool orthographic = frame.view.camera.projection == Projection::Orthographic;
@@ -64,8 +64,8 @@ GpuObjectBlock packObjectBlock(const Frame& frame, int object) {
   model[3] = glm::dvec4(translate, 1.0);
 
   GpuObjectBlock block;
-  block.model = mat4(model);
-  block.normalMatrix = mat4(glm::dmat4(t.rotation));
+  block.model = toGpuMat4(model);
+  block.normalMatrix = toGpuMat4(glm::dmat4(t.rotation));
   block.albedo = vec4(obj.albedo, 1.0);
   const bool srp = obj.brdf == Brdf::Srp;
   block.material = {float(srp ? obj.metallic : 0.0), float(srp ? obj.smoothness : 0.0), srp ? 1.0f : 0.0f, 0.0f};

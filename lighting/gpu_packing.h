@@ -79,6 +79,10 @@ struct GpuVertex {
 };
 static_assert(sizeof(GpuVertex) == 24);
 
+// A double matrix rounded once per entry to float, column-major as GLSL reads
+// it: every block that carries a matrix packs it through this.
+GpuMat4 toGpuMat4(const glm::dmat4& m);
+
 GpuFrameBlock packFrameBlock(const Frame& frame);
 // One light as FrameBlock holds it (also the deferred light pass's block).
 // `weight`: the light's fade weight (lighting/light_fade.h); it scales

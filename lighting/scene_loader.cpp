@@ -25,6 +25,7 @@
 #include <optional>
 #include <span>
 #include <sstream>
+#include <tuple>
 #include <unordered_set>
 #include <utility>
 
@@ -546,11 +547,17 @@ class SceneReader {
   }
 
   void readPlaneSize(const Node& node, MeshSpec& mesh) const {
+    std::tie(mesh.planeSizeX, mesh.planeSizeZ) = readPositivePair(node, "[sx, sz]");
+  }
+
+  // Two numbers > 0 (a plane's or a directional cookie's size); `form` names
+  // them in the message, e.g. "[sx, sz]".
+  std::pair<double, double> readPositivePair(const Node& node, std::string_view form) const {
     if (!node.value.is_array() || node.value.size() != 2) {
-      fail(node, "expected [sx, sz], an array of 2 numbers, got " + describeArrayOrType(node.value));
+      fail(node, "expected " + std::string(form) + ", an array of 2 numbers, got " + describeArrayOrType(node.value));
     }
-    mesh.planeSizeX = readNumber({node.value[0], node.pointer + "/0"}, above(0));
-    mesh.planeSizeZ = readNumber({node.value[1], node.pointer + "/1"}, above(0));
+    return {readNumber({node.value[0], node.pointer + "/0"}, above(0)),
+            readNumber({node.value[1], node.pointer + "/1"}, above(0))};
   }
 
   Transform readTransform(const Node& node) const {
@@ -637,7 +644,6 @@ class SceneReader {
     return *unit;
   }
 
-  // SPEC 2: the outer angle in (0, 180]; the inner one in [0, outer], optional (3.4).
   // SPEC 2 and 3.10: the cookie's keys by light type, its files read now, so
   // a bad file is a scene error (exit 2) naming the JSON path and the file.
   Cookie readCookie(const Node& node, const Light& light) const {
@@ -655,11 +661,7 @@ class SceneReader {
         requireMember(node, "image");
         requireMember(node, "size");
         readCookieImage(*member(node, "image"), cookie);
-        const Node size = *member(node, "size");
-        if (!size.value.is_array() || size.value.size() != 2)
-          fail(size, "expected [w, h], an array of 2 numbers, got " + describeArrayOrType(size.value));
-        cookie.sizeX = readNumber({size.value[0], size.pointer + "/0"}, above(0));
-        cookie.sizeY = readNumber({size.value[1], size.pointer + "/1"}, above(0));
+        std::tie(cookie.sizeX, cookie.sizeY) = readPositivePair(*member(node, "size"), "[w, h]");
         break;
       }
       case LightType::Spot:
@@ -711,6 +713,7 @@ class SceneReader {
     cookie.images.push_back(std::move(image));
   }
 
+  // SPEC 2: the outer angle in (0, 180]; the inner one in [0, outer], optional (3.4).
   void readSpotAngles(const Node& node, Light& light) const {
     if (auto outer = member(node, "spot_angle_deg")) light.spotAngleDeg = readNumber(*outer, {0, true, 180, false});
     if (auto inner = member(node, "inner_spot_angle_deg")) {
@@ -863,12 +866,6 @@ Scene loadSceneText(std::string_view text, const std::string& sourceName) {
   Scene scene = SceneReader(text, sourceName).readScene(document);
   scene.sourcePath = sourceName;
   return scene;
-}
-
-std::optional<std::string> featureNotRenderedYet(const Scene& scene) {
-  for (const Light& light : scene.lights)
-    if (light.cookie) return "light '" + light.name + "' has a cookie (SPEC 3.10), which no renderer draws yet";
-  return std::nullopt;
 }
 
 std::string_view deferredBufferName(DeferredBuffer buffer) { return choiceName(kDeferredBuffers, buffer); }

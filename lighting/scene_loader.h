@@ -6,7 +6,6 @@
 
 #include "lighting/scene.h"
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -39,12 +38,6 @@ Scene loadSceneFile(const std::string& path);
 
 // Validates scene text; `sourceName` is used as the file name in messages.
 Scene loadSceneText(std::string_view text, const std::string& sourceName);
-
-// What a valid scene asks for that the renderers do not draw yet (SPEC 3.10's
-// cookies are read and checked by the loader; the reference and the backends
-// follow, issue 18): a sentence naming it, or nullopt. Commands and the
-// suite's workers report such a scene NotSupported (exit 3), never a pass.
-std::optional<std::string> featureNotRenderedYet(const Scene& scene);
 
 // The scene-format name of a light buffer (SPEC 2 `pipeline.deferred_buffer`:
 // "hdr32", "hdr16", "ldr8"), from the table the loader reads it with, so

@@ -14,12 +14,14 @@ namespace tol = tolerance;
 CookieBound cookieWithBound(const Light& light, const Vec3& p, double positionError) {
   CookieBound out;
   if (!light.cookie) return out;
-  out.value = cookieValue(light, p);
   const CookieCoordinates at = cookieCoordinates(light, p);
   double spread = 0, magnitude = 0;
+  out.value = 0;  // SPEC 3.10: 0 behind a spot's apex
   if (!at.outside) {
+    const std::array<CookieTap, 4> taps = cookieTaps(light, at);
+    out.value = blendTaps(*light.cookie, taps);
     double lo = 1e300, hi = -1e300;
-    for (const CookieTap& tap : cookieTaps(light, at)) {
+    for (const CookieTap& tap : taps) {
       const double v = tapValue(*light.cookie, tap);
       lo = std::min(lo, v);
       hi = std::max(hi, v);

@@ -57,7 +57,6 @@ void addSpecular(const LobeAtPoint& lobe, const Vec3& N, const Vec3& L, const Ve
   sum.specular += specular;
   sum.specularBound += termBound * s.value + term * s.errorBound +
                        specular * (tol::kSpecularTermSteps * tol::kUnitRoundoff);
-  sum.halfVectorAmbiguous = sum.halfVectorAmbiguous || s.halfVectorAmbiguous;
 }
 
 }  // namespace

@@ -21,7 +21,6 @@ struct LightSum {
   // multiplies (the diffuse colour multiplies `value`), and its bound.
   Vec3 specular{0.0};
   Vec3 specularBound{0.0};
-  bool halfVectorAmbiguous = false;  // some light's H is undetermined here (specular_bound.h)
   int evaluations = 0;
   // Per channel, how many terms were > 0: the deferred light buffers round
   // once or twice per light that adds something (deferred_buffers.h).

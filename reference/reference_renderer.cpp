@@ -41,6 +41,23 @@ struct Shaded {
   int evaluations = 0;
 };
 
+// How far the float32 diffuse colour and F0 of an srp material may be from
+// SPEC 3.8's (tolerance_model.h); Lambert's A is the albedo the bound of the
+// combine already counts.
+struct BrdfColourErrors {
+  Vec3 diffuse{0.0}, specular{0.0};
+};
+BrdfColourErrors brdfColourErrors(const Object& object) {
+  BrdfColourErrors e;
+  if (object.brdf != Brdf::Srp) return e;
+  const double u = tol::kUnitRoundoff, m = object.metallic;
+  const Vec3& A = object.albedo;
+  e.diffuse = A * ((1.0 - kMinReflectivity) * (tol::kDiffuseColourSteps * u * (1.0 - m) + u * m));
+  e.specular = glm::max(A, Vec3(kMinReflectivity)) * (tol::kSpecularColourSteps * u) +
+               glm::abs(A - Vec3(kMinReflectivity)) * (u * m);
+  return e;
+}
+
 // Everything about a frame that does not change from pixel to pixel.
 struct FrameShading {
   const Frame& frame;
@@ -51,6 +68,7 @@ struct FrameShading {
   std::vector<PositionContext> contexts;  // per object
   std::vector<const ObjectBake*> bakes;   // per object: its maps, or null (SPEC 3.5, 3.6)
   std::vector<MaterialBrdf> materials;    // per object (SPEC 3.8; Lambert: diffuse = A, no lobe)
+  std::vector<BrdfColourErrors> colourErrors;  // per object
   std::optional<RealtimeBakedLights> realtimeBaked;  // ReferenceOptions::bakedLightsRealtime
   std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
   std::vector<Vec3> vertexBound;
@@ -68,6 +86,7 @@ struct FrameShading {
       lights.push_back(options.ideal ? f.idealLightsForObject() : f.lightsForObject(o));
       bakes.push_back(f.prepared->bakeOf(o));  // throws for a scene that needs a bake it did not get
       materials.push_back(materialBrdf(f.scene().objects[o]));
+      colourErrors.push_back(brdfColourErrors(f.scene().objects[o]));
       const BoundingSphere& bounds = objects[o].bounds;
       contexts.push_back({f.view.camera.position, glm::length(bounds.centre - f.view.camera.position) + bounds.radius});
     }
@@ -110,23 +129,6 @@ struct FrameShading {
                         std::min(2.0, positionError / distance + tol::kNormalizedDirectionSteps * u)};
     }
     return lobe;
-  }
-
-  // How far the float32 diffuse colour and F0 of an srp material may be from
-  // SPEC 3.8's (tolerance_model.h); Lambert's A is the albedo the bound
-  // of the combine already counts.
-  struct BrdfColourErrors {
-    Vec3 diffuse{0.0}, specular{0.0};
-  };
-  static BrdfColourErrors brdfColourErrors(const Object& object) {
-    BrdfColourErrors e;
-    if (object.brdf != Brdf::Srp) return e;
-    const double u = tol::kUnitRoundoff, m = object.metallic;
-    const Vec3& A = object.albedo;
-    e.diffuse = A * ((1.0 - kMinReflectivity) * (tol::kDiffuseColourSteps * u * (1.0 - m) + u * m));
-    e.specular = glm::max(A, Vec3(kMinReflectivity)) * (tol::kSpecularColourSteps * u) +
-                 glm::abs(A - Vec3(kMinReflectivity)) * (u * m);
-    return e;
   }
 
   // Clipping range along a ray: view depth in [near, far].
@@ -205,7 +207,7 @@ struct FrameShading {
     shaded.value = brdf.diffuse * (unlit + sum.value) + brdf.specular * sum.specular;
     const double combineSteps = tol::kFinalCombineSteps + (bake ? tol::kLightmapAddRoundingSteps : 0.0) +
                                 (brdf.lobe ? tol::kSpecularTermSteps : 0.0);
-    const BrdfColourErrors colourError = brdfColourErrors(scene.objects[tri.object]);
+    const BrdfColourErrors& colourError = colourErrors[tri.object];
     shaded.bound = brdf.diffuse * (sum.errorBound + bakedBound) + brdf.specular * sum.specularBound +
                    colourError.diffuse * (unlit + sum.value) + colourError.specular * sum.specular +
                    glm::abs(shaded.value) * (combineSteps * tol::kUnitRoundoff);

@@ -175,9 +175,7 @@ class Worker {
   conformance::SceneReferences& referencesOf(const std::string& scene) {
     auto it = references_.find(scene);
     if (it == references_.end()) {
-      lighting::Scene loaded = lighting::loadSceneFile(scene);
-      if (const auto missing = lighting::featureNotRenderedYet(loaded)) throw backends::NotSupportedError(*missing);
-      auto prepared = baking::prepareBakedScene(std::move(loaded));
+      auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(scene));
       it = references_.emplace(scene, std::make_unique<conformance::SceneReferences>(std::move(prepared))).first;
     }
     return *it->second;

@@ -1,6 +1,7 @@
 #include "backends/gl/gl_backend.h"
 
 #include "backends/backend_combinations.h"
+#include "backends/drawable_features.h"
 #include "backends/gl/baked_textures.h"
 #include "backends/gl/deferred_renderer.h"
 #include "backends/gl/forward_programs.h"
@@ -70,6 +71,7 @@ class GlBackend final : public Backend {
   DeviceInfo device() const override { return info_; }
 
   void preparePipeline(const lighting::Frame& frame) override {
+    requireDrawableFeatures(frame);
     context_->makeCurrent();
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     if (deferred(frame))
@@ -79,6 +81,7 @@ class GlBackend final : public Backend {
   }
 
   void draw(const lighting::Frame& frame) override {
+    requireDrawableFeatures(frame);
     context_->makeCurrent();
     lastDrawMilliseconds_.reset();
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);

@@ -1,5 +1,6 @@
 #include "backends/vulkan/vulkan_backend.h"
 
+#include "backends/drawable_features.h"
 #include "backends/vulkan/baked_textures.h"
 #include "backends/vulkan/deferred_renderer.h"
 #include "backends/vulkan/draw_timestamps.h"
@@ -46,6 +47,7 @@ class VulkanBackend final : public Backend {
   DeviceInfo device() const override { return device_.info; }
 
   void preparePipeline(const lighting::Frame& frame) override {
+    requireDrawableFeatures(frame);
     if (isDeferred(frame)) {
       deferred().preparePipelines(frame);
       checkValidation("creating the deferred pipelines");
@@ -56,6 +58,7 @@ class VulkanBackend final : public Backend {
   }
 
   void draw(const lighting::Frame& frame) override {
+    requireDrawableFeatures(frame);
     lastDrawMilliseconds_.reset();
     const lighting::ImageSize size = frame.scene().image;
     const vk::Extent2D extent{std::uint32_t(size.width), std::uint32_t(size.height)};

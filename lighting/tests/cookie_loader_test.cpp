@@ -112,14 +112,5 @@ TEST_F(CookieLoader, BadCookiesNameTheirPathAndFile) {
   EXPECT_NE(e.message.find("equal"), std::string::npos) << e.message;
 }
 
-TEST_F(CookieLoader, ACookieSceneIsNotRenderedYet) {
-  // Until the renderers draw cookies (issue 18), the commands that render
-  // report such a scene NotSupported; without a cookie nothing changes.
-  const Scene with = load(R"({"type": "spot", "name": "s", "cookie": {"image": "images/rgb.png"}})");
-  ASSERT_TRUE(featureNotRenderedYet(with));
-  EXPECT_NE(featureNotRenderedYet(with)->find("cookie"), std::string::npos);
-  EXPECT_FALSE(featureNotRenderedYet(load(R"({"type": "spot"})")));
-}
-
 }  // namespace
 }  // namespace lighting
