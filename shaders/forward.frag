@@ -4,17 +4,12 @@
 // CPU kept (SPEC 4 and 5): every kept light, or the object's list.
 #include "lighting.glsl"
 #include "object_data.glsl"
+#include "object_maps.glsl"
 
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) in vec3 vVertexLighting;
 layout(location = 3) in vec2 vLightmapUv;
-
-// The object's baked maps (SPEC 3.6), float textures with LINEAR filtering and
-// clamp to edge. Objects without maps get a 1x1 texture and flags of 0. The
-// OpenGL backend binds them by name (GLSL 330 has no binding qualifiers).
-layout(set = 1, binding = 0) uniform sampler2D lightmapTexture;
-layout(set = 1, binding = 1) uniform sampler2D shadowMaskTexture;
 
 layout(location = 0) out vec4 outColor;
 
@@ -24,15 +19,9 @@ const int kLegacyPixelLights = 4;
 void main() {
   vec3 p = vPosition;
   vec3 N = normalize(vNormal);
-  // The shadow mask at this fragment (SPEC 3.5): all ones on objects without one.
-  vec4 mask = vec4(1.0);
-  if (SHADOW_MASK && objectData.lightList.z != 0) mask = texture(shadowMaskTexture, vLightmapUv);
+  vec4 mask = objectShadowMask(vLightmapUv);
   SurfaceBrdf surface = surfaceBrdf(objectData.albedo.rgb, objectData.material, N, viewDirection(p));
-  // The radiance sum starts with what the diffuse colour multiplies besides
-  // the lights: ambient and the baked light (SPEC 3.6, the lightmap's irradiance).
-  LightSums sums = LightSums(vec3(0.0), vec3(0.0));
-  if (AMBIENT) sums.radiance += frameData.ambient.rgb;
-  if (LIGHTMAP && objectData.lightList.y != 0) sums.radiance += texture(lightmapTexture, vLightmapUv).rgb;
+  LightSums sums = unlitSums(vLightmapUv);
   vec3 L;
   // srp keeps directional lights apart and applies them to every object; the
   // legacy profile packs them with the others.

@@ -6,16 +6,13 @@
 // the depth stored in normal.w, so no pass samples the depth attachment.
 #include "lighting.glsl"
 #include "object_data.glsl"
+#include "object_maps.glsl"
 
 // Same names as forward.vert's outputs: GLSL 330 links stages by name.
 layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) in vec3 vVertexLighting;
 layout(location = 3) in vec2 vLightmapUv;
-
-// The object's baked maps (SPEC 3.6), bound exactly as in the forward pass.
-layout(set = 1, binding = 0) uniform sampler2D lightmapTexture;
-layout(set = 1, binding = 1) uniform sampler2D shadowMaskTexture;
 
 layout(location = 0) out vec4 outAlbedo;  // rgb albedo, a = 1 (cleared to 0: background)
 layout(location = 1) out vec4 outNormal;  // xyz normalize(vNormal), w = window depth
@@ -31,12 +28,7 @@ void main() {
   // The ambient and baked terms, times the BRDF's diffuse colour (SPEC 3.8;
   // A for Lambert): exactly the forward pass's sums before any light.
   SurfaceBrdf surface = surfaceBrdf(albedo, objectData.material, N, vec3(0.0));
-  LightSums sums = LightSums(vec3(0.0), vec3(0.0));
-  if (AMBIENT) sums.radiance += frameData.ambient.rgb;
-  if (LIGHTMAP && objectData.lightList.y != 0) sums.radiance += texture(lightmapTexture, vLightmapUv).rgb;
-  outBase = vec4(surface.diffuse * sums.radiance, 1.0);
+  outBase = vec4(surface.diffuse * unlitSums(vLightmapUv).radiance, 1.0);
   outMaterial = objectData.material;
-  vec4 mask = vec4(1.0);
-  if (SHADOW_MASK && objectData.lightList.z != 0) mask = texture(shadowMaskTexture, vLightmapUv);
-  outMask = mask;
+  outMask = objectShadowMask(vLightmapUv);
 }
