@@ -41,6 +41,10 @@ struct DeviceInfo {
   std::string driverVersion;
   std::string apiVersion;
   std::string selectedBy;  // the options that pick it in `lightcts backends`: "--device 0", "--driver softpipe"
+  // The fractional bits of a LINEAR filter's weights the device promises
+  // (Vulkan's subTexelPrecisionBits); OpenGL has no query, so 4, the Vulkan
+  // minimum SPEC 7 assumes. The tolerance of every filtered lookup uses it.
+  int subTexelPrecisionBits = 4;
 };
 
 struct BackendOptions {
@@ -63,6 +67,11 @@ class Backend {
   // Builds (or takes from the on-disk cache) the pipeline `frame` needs.
   // draw() does this on demand; benchmarks call it first to time it apart.
   virtual void preparePipeline(const lighting::Frame& frame) = 0;
+  // Uploads what `frame`'s prepared scene samples (its baked maps, its
+  // lights' cookies) unless that scene's are the ones uploaded last, and
+  // points the frame's cookie slots at them. draw() does this on demand;
+  // benchmarks call it first to time an upload apart from the draws.
+  virtual void prepareTextures(const lighting::Frame& frame) = 0;
   // Draws the frame and waits until the device has finished; no readback.
   virtual void draw(const lighting::Frame& frame) = 0;
   // The last drawn image: RGBA float, row 0 at the top, A = 1 where drawn.

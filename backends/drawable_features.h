@@ -1,8 +1,7 @@
-// What a frame asks for that neither backend draws yet: SPEC 3.10's light
-// cookies (issue 18), which the loader, the reference and the packing
-// already handle. Both backends call this first in preparePipeline and
-// draw, so such a frame is NotSupported (exit 3), never a pass, and the
-// reference still renders it.
+// What a frame asks for that no backend can draw: more cookies among its
+// kept lights than the texture slots (lighting/cookie_slots.h). Both
+// backends call this first in preparePipeline and draw, so such a frame is
+// NotSupported (exit 3), never a pass, and the reference still renders it.
 #pragma once
 
 #include "lighting/frame.h"

@@ -29,7 +29,11 @@ class SceneReferences {
   explicit SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared);
   const std::shared_ptr<const lighting::PreparedScene>& prepared() const { return prepared_; }
   const lighting::Frame& frame(int index);
-  const reference::ReferenceImages& reference(int frame);  // with referenceOptionsFor(scene)
+  // With referenceOptionsFor(scene) and SPEC 7's filter weights exact to
+  // 2^-subTexelBits (the device's DeviceInfo::subTexelPrecisionBits; 4 is
+  // the Vulkan minimum and `lightcts reference`'s).
+  const reference::ReferenceImages& reference(int frame, int subTexelBits = kMinimumSubTexelBits);
+  static constexpr int kMinimumSubTexelBits = 4;
   // SPEC 6 --ideal, for the popping score; it keeps the lightmaps whatever
   // `expect.against` says, so the baked part cancels and only budgets remain.
   const reference::ReferenceImages& ideal(int frame);
@@ -39,7 +43,7 @@ class SceneReferences {
   std::shared_ptr<const lighting::PreparedScene> prepared_;
   reference::ReferenceRenderer renderer_;
   std::map<int, lighting::Frame> frames_;
-  std::map<int, reference::ReferenceImages> references_;
+  std::map<std::pair<int, int>, reference::ReferenceImages> references_;  // by frame and sub-texel bits
   std::map<int, reference::ReferenceImages> ideals_;
   double referenceMs_ = 0;
 };

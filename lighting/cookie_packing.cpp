@@ -68,6 +68,8 @@ GpuCookieBlock packCookieBlock(const Frame& frame) {
 }
 
 int cookieBlockSlot(const Frame& frame, int sceneLight) {
+  // A frame made without slots (no cookie anywhere) has an empty table.
+  if (sceneLight >= int(frame.cookies.slotOfLight.size())) return -1;
   const int slot = frame.cookies.slotOfLight[sceneLight];
   if (slot < 0) return -1;
   return frame.scene().lights[sceneLight].type == LightType::Point ? kMaxCookieTextures + slot : slot;

@@ -1,5 +1,6 @@
 #include "lighting/gpu_packing.h"
 
+#include "lighting/cookie_packing.h"
 #include "lighting/light_math.h"
 
 namespace lighting {
@@ -30,7 +31,8 @@ GpuLight packGpuLight(const Frame& frame, int lightIndex, double weight) {
     g.position = vec4(light.position - frame.view.camera.position, 1.0);
     g.color = vec4(light.finalColor() * weight, inverseRangeSquared(light.range));
   }
-  g.spotDirection = vec4(-light.direction, 0.0);
+  // w: the light's cookie slot (SPEC 3.10), -1 without one (shaders/cookies.glsl).
+  g.spotDirection = vec4(-light.direction, double(cookieBlockSlot(frame, lightIndex)));
   const SpotFactors spot = lightSpotFactors(light, scene.pipeline.profile);
   const int channel = frame.prepared->shadowMask.channelOfLight[lightIndex];
   g.spotAngles = {float(spot.a), float(spot.b), float(channel),

@@ -33,7 +33,7 @@ struct alignas(16) GpuMat4 {
 struct GpuLight {
   GpuVec4 position;       // xyz: camera-relative position (local) or L = -direction (directional); w: 1 local, 0 directional
   GpuVec4 color;          // rgb: finalColor = color * intensity; w: invRangeSq (0 for directional)
-  GpuVec4 spotDirection;  // xyz: spotDir = -direction; w: unused
+  GpuVec4 spotDirection;  // xyz: spotDir = -direction; w: the cookie's GpuCookieBlock slot, -1 without one
   GpuVec4 spotAngles;     // x: a, y: b (point lights 0, 1); z: shadow-mask channel or -1; w: shadow strength
 };
 static_assert(sizeof(GpuLight) == 64);

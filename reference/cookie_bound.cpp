@@ -11,7 +11,7 @@ namespace reference {
 using namespace lighting;
 namespace tol = tolerance;
 
-CookieBound cookieWithBound(const Light& light, const Vec3& p, double positionError) {
+CookieBound cookieWithBound(const Light& light, const Vec3& p, double positionError, double weightPrecision) {
   CookieBound out;
   if (!light.cookie) return out;
   const CookieCoordinates at = cookieCoordinates(light, p);
@@ -30,7 +30,7 @@ CookieBound cookieWithBound(const Light& light, const Vec3& p, double positionEr
     magnitude = std::max(std::abs(lo), std::abs(hi));
   }
   // The weights' precision and the blend's roundings (as for the lightmaps).
-  const double fromWeights = tol::kFilterWeightErrorsPerSample * tol::kFilterWeightPrecision * spread;
+  const double fromWeights = tol::kFilterWeightErrorsPerSample * weightPrecision * spread;
   const double fromBlend = tol::kFilterBlendRoundingSteps * tol::kUnitRoundoff * magnitude;
   // The coordinate's error: the lookup redone positionError away.
   double fromCoordinate = 0;

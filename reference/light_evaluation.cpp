@@ -16,7 +16,8 @@ using namespace lighting;
 namespace tol = tolerance;
 
 LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::vector<double>& weights,
-                               const std::vector<int>& shadowMaskChannels) {
+                               const std::vector<int>& shadowMaskChannels, double filterWeightPrecision)
+    : filterWeightPrecision_(filterWeightPrecision) {
   lights_.reserve(scene.lights.size());
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
@@ -91,7 +92,7 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
         const double distance = glm::length(p - where.camera);
         const double positionError = tol::kPositionRoundingSteps * u * pointMagnitude + where.reconstructionError +
                                      tol::kCookieCoordinateSteps * u * distance;
-        applyCookie(cookieWithBound(*light.cookieLight, p, positionError), term, termBound);
+        applyCookie(cookieWithBound(*light.cookieLight, p, positionError, filterWeightPrecision_), term, termBound);
       }
       sum.value += term;
       sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
@@ -140,7 +141,7 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
                      term * maskRounding;
     if (light.cookieLight) {
       const double positionError = rayError + tol::kCookieCoordinateSteps * u * distance;
-      applyCookie(cookieWithBound(*light.cookieLight, p, positionError), term, termBound);
+      applyCookie(cookieWithBound(*light.cookieLight, p, positionError, filterWeightPrecision_), term, termBound);
     }
     sum.value += term;
     sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));

@@ -7,6 +7,7 @@
 #include "lighting/light_math.h"
 #include "lighting/scene.h"
 #include "reference/specular_bound.h"
+#include "reference/tolerance_model.h"
 
 #include <vector>
 
@@ -61,8 +62,10 @@ class LightEvaluator {
   // float(finalColor * weight)), so the error bound scales with it.
   // `shadowMaskChannels`: per scene light, its shadow-mask channel or -1
   // (ShadowMaskAssignment::channelOfLight); empty: no light has one.
+  // `filterWeightPrecision`: SPEC 7's filter weight precision, for cookies.
   LightEvaluator(const lighting::Scene& scene, lighting::Profile profile, const std::vector<double>& weights = {},
-                 const std::vector<int>& shadowMaskChannels = {});
+                 const std::vector<int>& shadowMaskChannels = {},
+                 double filterWeightPrecision = tolerance::kFilterWeightPrecision);
 
   // Adds the contributions of `lights` (scene indices) at p with unit normal N.
   // `mask`: the object's shadow mask at p, or null where there is none (an
@@ -87,6 +90,7 @@ class LightEvaluator {
     const lighting::Light* cookieLight = nullptr;  // SPEC 3.10: the light, when it has a cookie
   };
   std::vector<Prepared> lights_;
+  double filterWeightPrecision_;
 };
 
 }  // namespace reference

@@ -34,23 +34,23 @@ TexelFootprint texelFootprint(int resolution, const Vec2& uv) {
   return f;
 }
 
-double filteringErrorBound(double spread, double magnitude, int resolution) {
+double filteringErrorBound(double spread, double magnitude, int resolution, double weightPrecision) {
   const double u = tol::kUnitRoundoff;
   // Inside one cell the bilinear value changes by at most `spread` per texel
   // along each axis, i.e. N x spread per unit of UV.
-  const double fromWeights = tol::kFilterWeightErrorsPerSample * tol::kFilterWeightPrecision * spread;
+  const double fromWeights = tol::kFilterWeightErrorsPerSample * weightPrecision * spread;
   const double fromUv = 2.0 * resolution * spread * tol::kLightmapUvRoundingSteps * u;
   const double fromBlend = tol::kFilterBlendRoundingSteps * u * magnitude;
   return fromWeights + fromUv + fromBlend;
 }
 
-Vec4 filteringErrorBound(const lighting::BilinearSample& sample, int resolution) {
+Vec4 filteringErrorBound(const lighting::BilinearSample& sample, int resolution, double weightPrecision) {
   Vec4 bound(0.0);
   for (int c = 0; c < 4; ++c) {
     // The value is a convex blend of the four texels, so none is larger in
     // magnitude than |value| + spread.
     const double magnitude = std::abs(sample.value[c]) + sample.spread[c];
-    bound[c] = filteringErrorBound(sample.spread[c], magnitude, resolution);
+    bound[c] = filteringErrorBound(sample.spread[c], magnitude, resolution, weightPrecision);
   }
   return bound;
 }

@@ -6,6 +6,7 @@
 
 #include "lighting/baked_lighting.h"
 #include "lighting/transform.h"
+#include "reference/tolerance_model.h"
 
 namespace reference {
 
@@ -31,12 +32,14 @@ TexelFootprint texelFootprint(int resolution, const Vec2& uv);
 // The largest |float32 filter - exact bilinear value| of one channel, for a
 // sample whose four texels have spread `spread` (max - min) and magnitudes at
 // most `magnitude`, in an N x N map:
-//   2 x 2^-4 x spread                 weight precision, one error per axis
+//   2 x w x spread                    weight precision w (2^-4 unless the device reports more), one error per axis
 //   + 2 x N x 16u x spread            the float UV's error, at a slope <= N x spread per axis
 //   + 6u x magnitude                  the blend's own roundings
-double filteringErrorBound(double spread, double magnitude, int resolution);
+double filteringErrorBound(double spread, double magnitude, int resolution,
+                           double weightPrecision = tolerance::kFilterWeightPrecision);
 
 // The same per channel of a lighting::sampleBilinear result.
-Vec4 filteringErrorBound(const lighting::BilinearSample& sample, int resolution);
+Vec4 filteringErrorBound(const lighting::BilinearSample& sample, int resolution,
+                         double weightPrecision = tolerance::kFilterWeightPrecision);
 
 }  // namespace reference

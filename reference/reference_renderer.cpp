@@ -72,6 +72,7 @@ struct FrameShading {
   std::optional<RealtimeBakedLights> realtimeBaked;  // ReferenceOptions::bakedLightsRealtime
   std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
   std::vector<Vec3> vertexBound;
+  double filterWeightPrecision;  // ReferenceOptions::filterWeightPrecision
 
   FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, const ReferenceOptions& options)
       : frame(f),
@@ -80,7 +81,8 @@ struct FrameShading {
         // The fade weights are part of the budgets: `--ideal` has neither.
         evaluator(f.scene(), f.scene().pipeline.profile,
                   options.ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size()),
-                  f.prepared->shadowMask.channelOfLight) {
+                  f.prepared->shadowMask.channelOfLight, options.filterWeightPrecision),
+        filterWeightPrecision(options.filterWeightPrecision) {
     const auto& objects = f.prepared->objects;
     for (int o = 0; o < int(objects.size()); ++o) {
       lights.push_back(options.ideal ? f.idealLightsForObject() : f.lightsForObject(o));
@@ -169,7 +171,7 @@ struct FrameShading {
       if (!bake->shadowMask.empty()) {
         const BilinearSample m = sampleBilinear(bake->shadowMask, uv);
         mask.value = m.value;
-        mask.error = filteringErrorBound(m, bake->shadowMask.resolution);
+        mask.error = filteringErrorBound(m, bake->shadowMask.resolution, filterWeightPrecision);
       }
       if (realtimeBaked) {
         const RealtimeBakedLights::Sample e = realtimeBaked->sample(tri.object, p, N, uv);
@@ -178,7 +180,7 @@ struct FrameShading {
         interpolation = e.interpolation;
       } else if (!bake->lightmap.empty()) {
         const BilinearSample e = sampleBilinear(bake->lightmap, uv);
-        const Vec4 bound = filteringErrorBound(e, bake->lightmap.resolution);
+        const Vec4 bound = filteringErrorBound(e, bake->lightmap.resolution, filterWeightPrecision);
         baked = Vec3(e.value);
         bakedBound = Vec3(bound);
       }

@@ -7,6 +7,7 @@
 #include "imaging/image.h"
 #include "lighting/frame.h"
 #include "reference/bvh.h"
+#include "reference/tolerance_model.h"
 #include "reference/world_triangles.h"
 
 #include <cstdint>
@@ -31,6 +32,10 @@ struct ReferenceOptions {
   // Also return the tolerance's two parts (ReferenceImages::toleranceArithmetic,
   // toleranceShift), to see which dominates where (docs/tolerances.md).
   bool keepToleranceTerms = false;
+  // SPEC 7: a LINEAR filter's weights are exact to this (2^-bits of the
+  // device's sub-texel precision; 2^-4, the Vulkan minimum, when unknown):
+  // the filtering term of the lightmaps, shadow masks and cookies.
+  double filterWeightPrecision = tolerance::kFilterWeightPrecision;
 };
 
 struct ReferenceImages {

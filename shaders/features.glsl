@@ -27,5 +27,8 @@ layout(constant_id = 9) const bool LDR8_BUFFER = true;
 // The srp BRDF (SPEC 3.8): some material has it, so diffuse and F0 come from
 // metallic and the specular lobe is evaluated; off, every material is Lambert.
 layout(constant_id = 10) const bool SPECULAR_BRDF = true;
+// Light cookies (SPEC 3.10): some kept light has one, so lights carry a
+// cookie slot and the cookie textures are sampled (cookies.glsl).
+layout(constant_id = 11) const bool COOKIES = true;
 
 #endif

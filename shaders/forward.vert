@@ -37,8 +37,10 @@ void main() {
     // Mutant: rotation * scale * normal, never normalised.
     vec3 vertexNormal = MUTANT == MUTANT_VERTEX_NORMAL_NOT_NORMALISED ? mat3(objectData.model) * inNormal : N;
     vec3 L;  // unused: vertex lights are Lambert (the legacy profile has no srp BRDF)
+    CookieValues cookies = cookieValuesAt(worldPosition);  // SPEC 3.10 at the vertex
     for (int k = kLegacyPixelLights; k < count; ++k)
-      vVertexLighting += packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), L);
+      vVertexLighting +=
+          packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), cookies, L);
   }
   gl_Position = frameData.viewProjection * position;
 }

@@ -10,7 +10,7 @@
 struct Light {
   vec4 position;       // xyz: camera-relative position, or L = -direction; w: 1 local, 0 directional
   vec4 color;          // rgb: finalColor; w: invRangeSq
-  vec4 spotDirection;  // xyz: spotDir = -direction
+  vec4 spotDirection;  // xyz: spotDir = -direction; w: cookie slot in CookieBlock, or -1
   vec4 spotAngles;     // x: a, y: b (point: 0, 1); z: shadow-mask channel or -1; w: strength
 };
 

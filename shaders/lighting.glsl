@@ -8,6 +8,7 @@
 #include "features.glsl"
 #include "mutants.glsl"
 #include "light_data.glsl"
+#include "cookies.glsl"
 
 // SPEC 1.
 float saturate(float x) { return clamp(x, 0.0, 1.0); }
@@ -65,13 +66,15 @@ float shadowMaskAttenuation(Light light, vec4 mask) {
   return mix(1.0, mask[channel], strength);
 }
 
-// SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask, the radiance the
-// BRDF weighs (addLight); L is returned for the specular lobe.
-vec3 directionalLight(Light light, vec3 N, vec4 mask, out vec3 L) {
+// SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask, times the cookie
+// (SPEC 3.10; `cookies`: every slot's value at this point, cookies.glsl):
+// the radiance the BRDF weighs (addLight); L is returned for the specular lobe.
+vec3 directionalLight(Light light, vec3 N, vec4 mask, CookieValues cookies, out vec3 L) {
   L = light.position.xyz;
   float cosine = dot(N, L);
   if (MUTANT != MUTANT_DIRECTIONAL_NOT_SATURATED) cosine = saturate(cosine);
-  return light.color.rgb * (cosine * shadowMaskAttenuation(light, mask));
+  float attenuation = shadowMaskAttenuation(light, mask) * cookieAttenuation(light, cookies);
+  return light.color.rgb * (cosine * attenuation);
 }
 
 // Mutant: where the absolute-coordinates mutant puts positions, in float32:
@@ -104,13 +107,14 @@ float mutantAttenuationPrecision(float attenuation) {
 
 // SPEC 3.2: point and spot lights at camera-relative position p (the
 // absolute-coordinates mutant passes absolute ones).
-vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, out vec3 L) {
+vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, CookieValues cookies, out vec3 L) {
   vec3 ray = mutantWorldPosition(light.position.xyz) - p;
   float distSqr = clampedDistanceSquared(ray);
   L = ray * inversesqrt(distSqr);
   float attenuation = rangeAttenuation(distSqr, light.color.w) / distSqr;
   if (SPOT_LIGHTS) attenuation *= spotAttenuation(light.spotDirection.xyz, L, light.spotAngles.xy);
   attenuation *= shadowMaskAttenuation(light, mask);
+  attenuation *= cookieAttenuation(light, cookies);  // SPEC 3.10
   attenuation = mutantAttenuationPrecision(attenuation);
   float cosine = dot(N, L);
   if (MUTANT != MUTANT_LOCAL_NOT_SATURATED) cosine = saturate(cosine);
@@ -119,11 +123,11 @@ vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, out vec3 L) {
 
 // A light of the packed `otherLights` array. In the legacy profile it holds
 // directional lights too (w = 0); in srp only point and spot lights.
-vec3 packedLight(Light light, vec3 p, vec3 N, vec4 mask, out vec3 L) {
+vec3 packedLight(Light light, vec3 p, vec3 N, vec4 mask, CookieValues cookies, out vec3 L) {
   L = vec3(0.0);
-  if (DIRECTIONAL_LIGHTS && light.position.w == 0.0) return directionalLight(light, N, mask, L);
+  if (DIRECTIONAL_LIGHTS && light.position.w == 0.0) return directionalLight(light, N, mask, cookies, L);
   if (!POINT_LIGHTS && !SPOT_LIGHTS) return vec3(0.0);
-  return localLight(light, p, N, mask, L);
+  return localLight(light, p, N, mask, cookies, L);
 }
 
 // --- SPEC 3.8: the custom pipeline's BRDF -------------------------------

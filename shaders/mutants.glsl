@@ -32,5 +32,8 @@ const int MUTANT_LH2_NOT_CLAMPED = 20;            // specularStrength divides by
 const int MUTANT_F0_ALBEDO_ALWAYS = 21;           // F0 = albedo whatever the metallic
 const int MUTANT_VIEW_ABSOLUTE_COORDINATES = 22;  // V = normalize(camera - p) in absolute float32 coordinates
 const int MUTANT_HALF_VECTOR_NOT_NORMALISED = 23; // H = L + V, not normalised
+const int MUTANT_DIRECTIONAL_COOKIE_CLAMPED = 24; // directional cookie clamped to edge, not tiled (SPEC 3.10)
+const int MUTANT_CUBE_COOKIE_ROTATED = 25;        // point cookie sampled at the direction turned 90 degrees about y
+const int MUTANT_COOKIE_V_FLIPPED = 26;           // 2D cookies sampled at 1 - v: image row 0 taken as v = 1
 
 #endif

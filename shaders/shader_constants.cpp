@@ -19,6 +19,8 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kLdr8Buffer] = all || f.ldr8Buffer;
   // The full shader asks each object's material (object_data.glsl).
   v[kSpecularBrdf] = all || f.specularBrdf;
+  // The full shader asks each light's cookie slot (cookies.glsl).
+  v[kCookies] = all || f.cookies;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   return v;
 }

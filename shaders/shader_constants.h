@@ -22,7 +22,8 @@ enum ConstantId : std::uint32_t {
   kLightmap = 8,
   kLdr8Buffer = 9,  // deferred only: the light buffer is ldr8 (SPEC 3.7)
   kSpecularBrdf = 10,  // some material has the srp BRDF (SPEC 3.8)
-  kConstantCount = 11,
+  kCookies = 11,       // some kept light has a cookie (SPEC 3.10)
+  kConstantCount = 12,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

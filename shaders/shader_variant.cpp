@@ -47,6 +47,12 @@ const std::vector<MutantName>& mutantNames() {
        "V = normalize(camera - p) computed from absolute float32 coordinates, not camera-relative (SPEC 3.8, far from the origin)"},
       {Mutant::HalfVectorNotNormalised, "half-vector-not-normalised",
        "H = L + V without SafeNormalize: the lobe saturates over a wide plateau (SPEC 3.8)"},
+      {Mutant::DirectionalCookieClamped, "directional-cookie-clamped",
+       "the directional cookie is clamped to edge instead of tiled: one tile, then its border texels (SPEC 3.10)"},
+      {Mutant::CubeCookieRotated, "cube-cookie-rotated-90",
+       "the point cookie's cube is sampled at the direction turned 90 degrees about y (SPEC 3.10)"},
+      {Mutant::CookieVFlipped, "cookie-v-flipped",
+       "2D cookies are sampled at 1 - v: image row 0 taken as v = 1 (SPEC 3.10)"},
   };
   return names;
 }

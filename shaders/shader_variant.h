@@ -46,6 +46,11 @@ enum class Mutant : int {
   F0AlbedoAlways = 21,             // F0 = albedo whatever the metallic
   ViewAbsoluteCoordinates = 22,    // V = normalize(camera - p) from absolute float32 coordinates
   HalfVectorNotNormalised = 23,    // H = L + V, not SafeNormalize(L + V)
+  // Light cookies (SPEC 3.10), shader mutants. (Dropping the spot cookie's
+  // q.z <= 0 rule is no mutant: spotAtt is already 0 there, docs/tolerances.md "Cookies".)
+  DirectionalCookieClamped = 24,   // the directional cookie clamped to edge instead of tiled
+  CubeCookieRotated = 25,          // the point cookie's cube sampled turned 90 degrees about y
+  CookieVFlipped = 26,             // 2D cookies sampled at 1 - v (image row 0 taken as v = 1)
 };
 
 struct MutantName {

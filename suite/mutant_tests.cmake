@@ -31,7 +31,10 @@ set(mutant_killers
   "lh2-not-clamped=brdf/grazing-view.json,brdf/light-opposite-view.json"
   "f0-albedo-always=brdf/metallic-0.json"
   "view-absolute-coordinates=brdf/translated-1e5.json"
-  "half-vector-not-normalised=brdf/smoothness-0p9.json")
+  "half-vector-not-normalised=brdf/smoothness-0p9.json"
+  "directional-cookie-clamped=cookies/directional-tiled-many-repeats.json"
+  "cube-cookie-rotated-90=cookies/point-cube-seams-corner.json"
+  "cookie-v-flipped=cookies/directional-tiled-many-repeats.json,cookies/alpha-channel.json,cookies/spot-cone-crosses-light-plane.json")
 foreach(entry ${mutant_killers})
   string(REPLACE "=" ";" mutant_parts ${entry})
   list(GET mutant_parts 0 mutant)

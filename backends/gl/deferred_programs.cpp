@@ -1,5 +1,6 @@
 #include "backends/gl/deferred_programs.h"
 
+#include "backends/gl/cookie_textures.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/program_builder.h"
 #include "shaders/embedded_spirv.h"
@@ -46,6 +47,7 @@ GlName DeferredPrograms::buildLight(const shaders::ConstantValues& constants) co
   gl_.glUseProgram(program.get());
   for (int t = 0; t < kGbufferColourCount; ++t)
     bindSampler(gl_, program.get(), kGbufferSamplers[t], kFirstGbufferTextureUnit + t);
+  bindCookieInterface(gl_, program.get());
   return program;
 }
 

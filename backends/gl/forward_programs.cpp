@@ -1,5 +1,6 @@
 #include "backends/gl/forward_programs.h"
 
+#include "backends/gl/cookie_textures.h"
 #include "backends/gl/program_builder.h"
 #include "shaders/embedded_spirv.h"
 
@@ -18,6 +19,7 @@ void bindSceneObjectInterface(const GlFunctions& gl, GLuint program) {
   gl.glUseProgram(program);
   bindSampler(gl, program, "lightmapTexture", kLightmapTextureUnit);
   bindSampler(gl, program, "shadowMaskTexture", kShadowMaskTextureUnit);
+  bindCookieInterface(gl, program);
 }
 
 GlName ForwardPrograms::build(const shaders::ConstantValues& constants) const {

@@ -3,6 +3,7 @@
 #include "backends/backend_combinations.h"
 #include "backends/drawable_features.h"
 #include "backends/gl/baked_textures.h"
+#include "backends/gl/cookie_textures.h"
 #include "backends/gl/deferred_renderer.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/gl_context.h"
@@ -48,6 +49,7 @@ class GlBackend final : public Backend {
                               "' (the driver is missing, or another was already loaded in this process)");
     programs_.emplace(gl_);
     bakedTextures_.emplace(gl_);
+    cookieTextures_.emplace(gl_);
     sceneDraws_.emplace(gl_);
     deferred_.emplace(gl_, options.variant.mutant);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
@@ -80,6 +82,13 @@ class GlBackend final : public Backend {
       programs_->program(constants);
   }
 
+  void prepareTextures(const lighting::Frame& frame) override {
+    requireDrawableFeatures(frame);
+    context_->makeCurrent();
+    bakedTextures_->update(*frame.prepared);
+    cookieTextures_->update(frame);  // binds the frame's cookie block and slots too
+  }
+
   void draw(const lighting::Frame& frame) override {
     requireDrawableFeatures(frame);
     context_->makeCurrent();
@@ -90,7 +99,7 @@ class GlBackend final : public Backend {
     const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(constants) : DeferredProgramSet{};
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     sceneDraws_->update(frame);
-    bakedTextures_->update(*frame.prepared);  // before the timed draws: uploads are not drawing
+    prepareTextures(frame);  // before the timed draws: uploads are not drawing
     if (isDeferred)
       deferred_->beginFrame(frame, width_, height_);  // binds and clears the G-buffer
     else
@@ -197,6 +206,7 @@ class GlBackend final : public Backend {
   GlFunctions gl_;
   std::optional<ForwardPrograms> programs_;
   std::optional<BakedTextures> bakedTextures_;
+  std::optional<CookieTextures> cookieTextures_;
   std::optional<SceneDraws> sceneDraws_;
   std::optional<DeferredRenderer> deferred_;
   GlName color_, depth_, framebuffer_;

@@ -39,13 +39,14 @@ GlName makeTexture(const GlFunctions& gl) {
   return makeName(gl, &GlFunctions::glGenTextures, &GlFunctions::glDeleteTextures);
 }
 
-void setSingleLevelSampling(const GlFunctions& gl, GLint filter) {
-  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
-  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+void setSingleLevelSampling(const GlFunctions& gl, GLint filter, GLenum target, GLint wrap) {
+  gl.glTexParameteri(target, GL_TEXTURE_BASE_LEVEL, 0);
+  gl.glTexParameteri(target, GL_TEXTURE_MAX_LEVEL, 0);
+  gl.glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+  gl.glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+  gl.glTexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+  gl.glTexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+  gl.glTexParameteri(target, GL_TEXTURE_WRAP_R, wrap);
 }
 
 std::size_t uniformBlockStride(const GlFunctions& gl, std::size_t blockSize) {

@@ -52,9 +52,11 @@ GlName makeTexture(const GlFunctions& gl);
 // GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT (backends/aligned_stride.h).
 std::size_t uniformBlockStride(const GlFunctions& gl, std::size_t blockSize);
 
-// For the 2D texture bound now: one level (complete without mipmaps), min and
-// mag filter `filter` (GL_LINEAR for the baked maps, GL_NEAREST for render
-// targets read with texelFetch), clamp to edge on S and T.
-void setSingleLevelSampling(const GlFunctions& gl, GLint filter);
+// For the texture bound now to `target`: one level (complete without
+// mipmaps), min and mag filter `filter` (GL_LINEAR for the baked maps and
+// cookies, GL_NEAREST for render targets read with texelFetch), `wrap` on S,
+// T and R (clamp to edge but for the tiled directional cookies).
+void setSingleLevelSampling(const GlFunctions& gl, GLint filter, GLenum target = GL_TEXTURE_2D,
+                            GLint wrap = GL_CLAMP_TO_EDGE);
 
 }  // namespace backends::gl

@@ -12,20 +12,6 @@ namespace {
 constexpr std::array<float, 4> kNoLightmapTexel{0.0f, 0.0f, 0.0f, 1.0f};
 constexpr std::array<float, 4> kNoShadowMaskTexel{1.0f, 1.0f, 1.0f, 1.0f};
 
-vk::raii::Sampler createSampler(const vk::raii::Device& device, vk::Filter filter) {
-  return vk::raii::Sampler(device, vk::SamplerCreateInfo{.magFilter = filter,
-                                                         .minFilter = filter,
-                                                         .mipmapMode = vk::SamplerMipmapMode::eNearest,
-                                                         .addressModeU = vk::SamplerAddressMode::eClampToEdge,
-                                                         .addressModeV = vk::SamplerAddressMode::eClampToEdge,
-                                                         .addressModeW = vk::SamplerAddressMode::eClampToEdge,
-                                                         .mipLodBias = 0.0f,
-                                                         .anisotropyEnable = VK_FALSE,
-                                                         .compareEnable = VK_FALSE,
-                                                         .minLod = 0.0f,
-                                                         .maxLod = 0.0f,
-                                                         .unnormalizedCoordinates = VK_FALSE});
-}
 
 struct BoundMap {
   const DeviceImage* image;
@@ -63,8 +49,8 @@ vk::raii::DescriptorSetLayout createBakedMapsSetLayout(const vk::raii::Device& d
 }
 
 BakedMapDefaults::BakedMapDefaults(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout)
-    : bilinear_(createSampler(device.device, vk::Filter::eLinear)),
-      nearest_(createSampler(device.device, vk::Filter::eNearest)),
+    : bilinear_(createSingleLevelSampler(device.device, vk::Filter::eLinear, vk::SamplerAddressMode::eClampToEdge)),
+      nearest_(createSingleLevelSampler(device.device, vk::Filter::eNearest, vk::SamplerAddressMode::eClampToEdge)),
       noLightmap_(createSampledMapImage(device, {1, 1})),
       noShadowMask_(createSampledMapImage(device, {1, 1})) {
   const std::array<TextureUpload, 2> uploads{{{&noLightmap_, kNoLightmapTexel}, {&noShadowMask_, kNoShadowMaskTexel}}};

@@ -13,7 +13,8 @@
 namespace backends::vulkan {
 
 DeferredPipelines::DeferredPipelines(const VulkanDevice& device, const PipelineCacheFile& cache,
-                                     const vk::raii::DescriptorSetLayout& mapsSetLayout)
+                                     const vk::raii::DescriptorSetLayout& mapsSetLayout,
+                                     const vk::raii::DescriptorSetLayout& cookieSetLayout)
     : builder_(device, cache),
       gbufferStages_(device.device, shaders::forwardVertexSpirv(), shaders::gbufferFragmentSpirv()),
       lightStages_(device.device, shaders::deferredLightVertexSpirv(), shaders::deferredLightFragmentSpirv()),
@@ -37,7 +38,8 @@ DeferredPipelines::DeferredPipelines(const VulkanDevice& device, const PipelineC
                    .stageFlags = vk::ShaderStageFlagBits::eFragment};
   texturesSetLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = textures.size(), .pBindings = textures.data()});
-  const std::array<vk::DescriptorSetLayout, 3> setLayouts{*uniformsSetLayout_, *mapsSetLayout, *texturesSetLayout_};
+  const std::array<vk::DescriptorSetLayout, 4> setLayouts{*uniformsSetLayout_, *mapsSetLayout, *texturesSetLayout_,
+                                                          *cookieSetLayout};
   layout_ = vk::raii::PipelineLayout(
       device.device, vk::PipelineLayoutCreateInfo{.setLayoutCount = setLayouts.size(), .pSetLayouts = setLayouts.data()});
 }

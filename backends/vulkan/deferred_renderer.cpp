@@ -1,5 +1,6 @@
 #include "backends/vulkan/deferred_renderer.h"
 
+#include "backends/vulkan/cookie_textures.h"
 #include "backends/vulkan/scene_pass.h"
 #include "lighting/deferred_lights.h"
 #include "lighting/gpu_packing.h"
@@ -11,8 +12,9 @@ namespace backends::vulkan {
 
 DeferredRenderer::DeferredRenderer(const VulkanDevice& device, const PipelineCacheFile& cache,
                                    const vk::raii::DescriptorSetLayout& mapsSetLayout,
+                                   const vk::raii::DescriptorSetLayout& cookieSetLayout,
                                    const shaders::ShaderVariant& variant)
-    : device_(device), variant_(variant), pipelines_(device, cache, mapsSetLayout) {}
+    : device_(device), variant_(variant), pipelines_(device, cache, mapsSetLayout, cookieSetLayout) {}
 
 void DeferredRenderer::preparePipelines(const lighting::Frame& frame) {
   choosePipelines(frame, lighting::lightVolumes(frame));
@@ -63,13 +65,16 @@ void DeferredRenderer::prepareFrame(const lighting::Frame& frame) {
 }
 
 void DeferredRenderer::record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry,
-                              const SceneBakedTextures& maps, const RenderTarget& output) const {
+                              const SceneBakedTextures& maps, vk::DescriptorSet cookies,
+                              const RenderTarget& output) const {
   std::vector<vk::ImageMemoryBarrier2> start;
   for (const DeviceImage& image : targets_->gbuffer) start.push_back(discardToColorAttachment(image));
   start.push_back(discardToColorAttachment(targets_->lightBuffer));
   start.push_back(discardToColorAttachment(output.color));
   start.push_back(discardToDepthAttachment(targets_->depth));
   recordBarriers(commands, start);
+  // One pipeline layout for the three passes: set 3 stays bound through them.
+  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kCookieSetIndex, {cookies}, {});
 
   recordGBufferPass(commands, geometry, maps);
 

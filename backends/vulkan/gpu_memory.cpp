@@ -16,14 +16,17 @@ HostBuffer::HostBuffer(const VulkanDevice& device, vk::DeviceSize bytes, vk::Buf
 }
 
 DeviceImage::DeviceImage(const VulkanDevice& device, vk::Format imageFormat, vk::Extent2D imageExtent,
-                         vk::ImageUsageFlags usage, vk::ImageAspectFlags aspect)
-    : format(imageFormat), extent(imageExtent) {
+                         vk::ImageUsageFlags usage, vk::ImageAspectFlags aspect, ImageShape shape)
+    : format(imageFormat), extent(imageExtent), layers(shape == ImageShape::Cube ? 6 : 1) {
+  const bool cube = shape == ImageShape::Cube;
   image = vk::raii::Image(device.device, vk::ImageCreateInfo{
+                                             .flags = cube ? vk::ImageCreateFlagBits::eCubeCompatible
+                                                           : vk::ImageCreateFlags{},
                                              .imageType = vk::ImageType::e2D,
                                              .format = format,
                                              .extent = vk::Extent3D{extent.width, extent.height, 1},
                                              .mipLevels = 1,
-                                             .arrayLayers = 1,
+                                             .arrayLayers = layers,
                                              .samples = vk::SampleCountFlagBits::e1,
                                              .tiling = vk::ImageTiling::eOptimal,
                                              .usage = usage,
@@ -38,9 +41,9 @@ DeviceImage::DeviceImage(const VulkanDevice& device, vk::Format imageFormat, vk:
   image.bindMemory(*memory, 0);
   view = vk::raii::ImageView(device.device, vk::ImageViewCreateInfo{
                                                 .image = *image,
-                                                .viewType = vk::ImageViewType::e2D,
+                                                .viewType = cube ? vk::ImageViewType::eCube : vk::ImageViewType::e2D,
                                                 .format = format,
-                                                .subresourceRange = {aspect, 0, 1, 0, 1},
+                                                .subresourceRange = {aspect, 0, 1, 0, layers},
                                             });
 }
 

@@ -6,6 +6,7 @@
 
 #include "backends/vulkan/vulkan_device.h"
 
+#include <cstdint>
 #include <cstring>
 #include <span>
 
@@ -25,15 +26,20 @@ struct HostBuffer {
   }
 };
 
+// A flat image has one layer; a cube has six (+X, -X, +Y, -Y, +Z, -Z) and a
+// cube view.
+enum class ImageShape { Flat, Cube };
+
 struct DeviceImage {
   DeviceImage(const VulkanDevice& device, vk::Format format, vk::Extent2D extent, vk::ImageUsageFlags usage,
-              vk::ImageAspectFlags aspect);
+              vk::ImageAspectFlags aspect, ImageShape shape = ImageShape::Flat);
 
   vk::raii::Image image{nullptr};
   vk::raii::DeviceMemory memory{nullptr};
   vk::raii::ImageView view{nullptr};
   vk::Format format;
   vk::Extent2D extent;
+  std::uint32_t layers = 1;
 };
 
 }  // namespace backends::vulkan

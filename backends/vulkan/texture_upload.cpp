@@ -15,7 +15,7 @@ vk::ImageMemoryBarrier2 layoutTransition(const DeviceImage& image, vk::ImageLayo
   vk::ImageMemoryBarrier2 barrier{.oldLayout = from,
                                   .newLayout = to,
                                   .image = *image.image,
-                                  .subresourceRange = {vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1}};
+                                  .subresourceRange = {vk::ImageAspectFlagBits::eColor, 0, 1, 0, image.layers}};
   if (to == vk::ImageLayout::eTransferDstOptimal) {
     // A fresh image: nothing before the copy to wait for.
     barrier.dstStageMask = vk::PipelineStageFlagBits2::eCopy;
@@ -25,7 +25,8 @@ vk::ImageMemoryBarrier2 layoutTransition(const DeviceImage& image, vk::ImageLayo
     // in this submission or any later one on the queue.
     barrier.srcStageMask = vk::PipelineStageFlagBits2::eCopy;
     barrier.srcAccessMask = vk::AccessFlagBits2::eTransferWrite;
-    barrier.dstStageMask = vk::PipelineStageFlagBits2::eFragmentShader;
+    // The vertex stage too: legacy vertex lights read cookies (cookies.glsl).
+    barrier.dstStageMask = vk::PipelineStageFlagBits2::eVertexShader | vk::PipelineStageFlagBits2::eFragmentShader;
     barrier.dstAccessMask = vk::AccessFlagBits2::eShaderSampledRead;
   }
   return barrier;
@@ -39,6 +40,28 @@ DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D exten
                      vk::ImageAspectFlagBits::eColor);
 }
 
+vk::raii::Sampler createSingleLevelSampler(const vk::raii::Device& device, vk::Filter filter,
+                                           vk::SamplerAddressMode address) {
+  return vk::raii::Sampler(device, vk::SamplerCreateInfo{.magFilter = filter,
+                                                         .minFilter = filter,
+                                                         .mipmapMode = vk::SamplerMipmapMode::eNearest,
+                                                         .addressModeU = address,
+                                                         .addressModeV = address,
+                                                         .addressModeW = address,
+                                                         .mipLodBias = 0.0f,
+                                                         .anisotropyEnable = VK_FALSE,
+                                                         .compareEnable = VK_FALSE,
+                                                         .minLod = 0.0f,
+                                                         .maxLod = 0.0f,
+                                                         .unnormalizedCoordinates = VK_FALSE});
+}
+
+DeviceImage createSampledCubeImage(const VulkanDevice& device, std::uint32_t size) {
+  return DeviceImage(device, kSampledMapFormat, {size, size},
+                     vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
+                     vk::ImageAspectFlagBits::eColor, ImageShape::Cube);
+}
+
 void uploadTextures(const VulkanDevice& device, std::span<const TextureUpload> uploads) {
   if (uploads.empty()) return;
   // Each image's texels at its own offset; every size is a whole number of
@@ -48,9 +71,10 @@ void uploadTextures(const VulkanDevice& device, std::span<const TextureUpload> u
   vk::DeviceSize total = 0;
   for (const TextureUpload& u : uploads) {
     const vk::Extent2D extent = u.image->extent;
-    if (u.texels.size_bytes() != vk::DeviceSize(extent.width) * extent.height * kTexelBytes)
+    if (u.texels.size_bytes() != vk::DeviceSize(extent.width) * extent.height * u.image->layers * kTexelBytes)
       throw std::logic_error("a texture upload of " + std::to_string(u.texels.size()) + " floats for a " +
-                             std::to_string(extent.width) + " x " + std::to_string(extent.height) + " image");
+                             std::to_string(extent.width) + " x " + std::to_string(extent.height) + " x " +
+                             std::to_string(u.image->layers) + " image");
     offsets.push_back(total);
     total += u.texels.size_bytes();
   }
@@ -76,7 +100,8 @@ void uploadTextures(const VulkanDevice& device, std::span<const TextureUpload> u
     const vk::BufferImageCopy region{.bufferOffset = offsets[k],
                                      .bufferRowLength = 0,  // tightly packed
                                      .bufferImageHeight = 0,
-                                     .imageSubresource = {vk::ImageAspectFlagBits::eColor, 0, 0, 1},
+                                     .imageSubresource = {vk::ImageAspectFlagBits::eColor, 0, 0,
+                                                          uploads[k].image->layers},
                                      .imageOffset = {0, 0, 0},
                                      .imageExtent = {extent.width, extent.height, 1}};
     cb.copyBufferToImage(*staging.buffer, *uploads[k].image->image, vk::ImageLayout::eTransferDstOptimal, region);

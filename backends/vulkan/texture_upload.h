@@ -1,12 +1,14 @@
 // Fills sampled images from the CPU: the texels go through one host-visible
 // staging buffer and a one-time command buffer (transfer, then the layout the
 // fragment stage samples from), and the call waits for the copy to finish.
-// Used for the baked maps (baked_textures.h), which change only when the
+// Used for the baked maps (baked_textures.h) and the cookies
+// (cookie_textures.h), which change only when the
 // scene or its bake does, so a blocking upload costs nothing per frame.
 #pragma once
 
 #include "backends/vulkan/gpu_memory.h"
 
+#include <cstdint>
 #include <span>
 
 namespace backends::vulkan {
@@ -17,9 +19,18 @@ constexpr vk::Format kSampledMapFormat = vk::Format::eR32G32B32A32Sfloat;
 // A 2D image to sample (one mip level, optimal tiling) of kSampledMapFormat.
 DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D extent);
 
+// A sampler of one level read at level 0 (maxLod 0), no anisotropy or
+// compare: `filter` both ways, `address` on every axis.
+vk::raii::Sampler createSingleLevelSampler(const vk::raii::Device& device, vk::Filter filter,
+                                           vk::SamplerAddressMode address);
+
+// A cube of kSampledMapFormat to sample, six square faces of `size`.
+DeviceImage createSampledCubeImage(const VulkanDevice& device, std::uint32_t size);
+
 struct TextureUpload {
-  const DeviceImage* image = nullptr;  // from createSampledMapImage, in the undefined layout
-  // width * height texels, row by row from row 0, four floats each.
+  const DeviceImage* image = nullptr;  // from createSampled*Image, in the undefined layout
+  // width * height texels per layer, row by row from row 0, layer after
+  // layer (a cube's faces in its order), four floats each.
   std::span<const float> texels;
 };
 

@@ -2,6 +2,7 @@
 
 #include "backends/drawable_features.h"
 #include "backends/vulkan/baked_textures.h"
+#include "backends/vulkan/cookie_textures.h"
 #include "backends/vulkan/deferred_renderer.h"
 #include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/forward_pipeline.h"
@@ -30,7 +31,8 @@ class VulkanBackend final : public Backend {
         device_(instance_, options.device),
         cache_(device_),
         pipelines_(device_, cache_),
-        mapDefaults_(device_, pipelines_.mapsSetLayout()) {
+        mapDefaults_(device_, pipelines_.mapsSetLayout()),
+        cookies_(device_, pipelines_.cookieSetLayout()) {
     pool_ = vk::raii::CommandPool(device_.device,
                                   vk::CommandPoolCreateInfo{.flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                             .queueFamilyIndex = device_.queueFamily});
@@ -57,6 +59,19 @@ class VulkanBackend final : public Backend {
     checkValidation("creating the forward pipeline");
   }
 
+  void prepareTextures(const lighting::Frame& frame) override {
+    requireDrawableFeatures(frame);
+    // The maps are uploaded once per prepared scene and bake; a CPU mutant
+    // that swaps the bake hands over a new one.
+    if (!maps_ || !maps_->isFor(*frame.prepared)) {
+      maps_.reset();
+      maps_.emplace(device_, mapDefaults_, pipelines_.mapsSetLayout(), frame.prepared);
+      checkValidation("uploading the baked maps of " + frame.scene().sourcePath);
+    }
+    cookies_.update(frame);  // uploads a new scene's cookies; this frame's block and slots
+    checkValidation("writing the cookies of " + frame.scene().sourcePath);
+  }
+
   void draw(const lighting::Frame& frame) override {
     requireDrawableFeatures(frame);
     lastDrawMilliseconds_.reset();
@@ -70,13 +85,7 @@ class VulkanBackend final : public Backend {
       geometry_.reset();
       geometry_.emplace(device_, frame.prepared, packGeometry(*frame.prepared));
     }
-    // The maps are uploaded once per prepared scene and bake; a CPU mutant
-    // that swaps the bake hands over a new one.
-    if (!maps_ || !maps_->isFor(*frame.prepared)) {
-      maps_.reset();
-      maps_.emplace(device_, mapDefaults_, pipelines_.mapsSetLayout(), frame.prepared);
-      checkValidation("uploading the baked maps of " + frame.scene().sourcePath);
-    }
+    prepareTextures(frame);
     const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
     if (isDeferred(frame)) {
       drawDeferred(frame, when);
@@ -116,7 +125,8 @@ class VulkanBackend final : public Backend {
 
   // Made on the first deferred frame: forward-only runs never build it.
   DeferredRenderer& deferred() {
-    if (!deferred_) deferred_.emplace(device_, cache_, pipelines_.mapsSetLayout(), options_.variant);
+    if (!deferred_)
+      deferred_.emplace(device_, cache_, pipelines_.mapsSetLayout(), pipelines_.cookieSetLayout(), options_.variant);
     return *deferred_;
   }
 
@@ -129,7 +139,7 @@ class VulkanBackend final : public Backend {
     submit(
         [&](const vk::raii::CommandBuffer& cb) {
           if (timestamps_) timestamps_->recordBegin(cb);
-          renderer.record(cb, *geometry_, *maps_, *target_);
+          renderer.record(cb, *geometry_, *maps_, cookies_.set(), *target_);
           if (timestamps_) timestamps_->recordEnd(cb);
         },
         when);
@@ -150,6 +160,7 @@ class VulkanBackend final : public Backend {
     const std::array<vk::ImageMemoryBarrier2, 2> toAttachment{discardToColorAttachment(target_->color),
                                                               discardToDepthAttachment(target_->depth)};
     recordBarriers(cb, toAttachment);
+    cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kCookieSetIndex, {cookies_.set()}, {});
     // Background: value 0 (SPEC 6), alpha 1 (SPEC 8).
     const std::array<vk::RenderingAttachmentInfo, 1> color{clearedColor(target_->color, 0.0f, 1.0f)};
     recordSceneObjectsPass(cb, *geometry_,
@@ -192,6 +203,7 @@ class VulkanBackend final : public Backend {
   PipelineCacheFile cache_;
   ForwardPipelines pipelines_;
   BakedMapDefaults mapDefaults_;
+  CookieTextures cookies_;
   vk::raii::CommandPool pool_{nullptr};
   vk::raii::CommandBuffer commands_{nullptr};
   vk::raii::Fence fence_{nullptr};

@@ -95,6 +95,7 @@ DeviceInfo describeDevice(const vk::raii::PhysicalDevice& device) {
   info.driver = std::string(d.driverName.data()) + " (" + d.driverInfo.data() + ")";
   info.driverVersion = driverVersionString(p.vendorID, p.driverVersion);
   info.apiVersion = versionString(p.apiVersion);
+  info.subTexelPrecisionBits = int(p.limits.subTexelPrecisionBits);
   return info;
 }
 

@@ -89,5 +89,23 @@ TEST(CookieReference, BoundCoversEitherFaceAtACubeEdge) {
   EXPECT_LE(std::abs(onZ - b.value), b.errorBound);
 }
 
+// SPEC 7: a device that reports 8 sub-texel bits has its weights' term cut
+// from 2 x 2^-4 to 2 x 2^-8 of the taps' spread, and nothing else changes.
+TEST(CookieReference, FilterTermFollowsTheWeightPrecision) {
+  Light l;
+  l.type = LightType::Spot;
+  l.position = {0, 0, 0};
+  l.direction = {0, 0, 1};
+  l.spotAngleDeg = 90;
+  Cookie cookie;
+  cookie.images.push_back(checker(4, 0.25f, 0.75f));  // every bilinear footprint spreads 0.5
+  l.cookie = cookie;
+  const Vec3 p(0.1, 0.05, 1.0);
+  const CookieBound coarse = cookieWithBound(l, p, 0.0, 0x1p-4);
+  const CookieBound fine = cookieWithBound(l, p, 0.0, 0x1p-8);
+  EXPECT_EQ(coarse.value, fine.value);
+  EXPECT_NEAR(coarse.errorBound - fine.errorBound, 2 * (0x1p-4 - 0x1p-8) * 0.5, 1e-15);
+}
+
 }  // namespace
 }  // namespace reference

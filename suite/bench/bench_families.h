@@ -1,7 +1,8 @@
-// The four families of frame benchmarks (docs/bench-format.md), each in its
+// The families of frame benchmarks (docs/bench-format.md), each in its
 // own file, each registering through the Registrar:
 //   field_modes.cpp      the 1280x720 64-light field in every mode (frame,
 //                        frame_readback, pipeline), with error counters
+//   cookie_uploads.cpp   upload: the cookie field's cookies to the device
 //   lightmap_modes.cpp   lightmap-N against the same lights in real time
 //   cost_curves.cpp      curve-lights, curve-resolution, curve-objects
 //   suite_scenes.cpp     --suite_scenes: frame 0 of every suite scene
@@ -9,6 +10,7 @@
 
 #include "suite/bench/bench_frame.h"
 #include "suite/bench/bench_registrar.h"
+#include "suite/bench/bench_scenes.h"
 #include "suite/bench/run_state.h"
 
 #include <memory>
@@ -17,6 +19,25 @@
 #include <vector>
 
 namespace bench {
+
+// The field's scene name in every benchmark name.
+inline constexpr const char* kFieldScene = "lights64-1280x720";
+
+// The cookie modes of the field (SPEC 3.10 and 9, cookies on and off):
+// `cookies` is the field with FieldSpec::cookies, `cookie-lights` the same
+// lights without their cookies (FieldSpec::cookieLights).
+inline constexpr const char* kCookiesMode = "cookies";
+inline constexpr const char* kCookieLightsMode = "cookie-lights";
+
+// One mode of the field: its benchmark name, its scene and its shader variant.
+struct FieldModeSpec {
+  std::string name;
+  FieldSpec field;
+  bool fullShader = false;
+};
+// The field's modes in the order they are registered, in the set of a run
+// with --quick (`quick`) or on a slow driver (`slow`).
+std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow);
 
 // The field's frames by mode name, made (and their loads traced) up front.
 using NamedFrames = std::vector<std::pair<std::string, std::shared_ptr<const BenchFrame>>>;
@@ -28,11 +49,15 @@ FieldModes fieldModes(const RunState& run);
 void registerFieldModes(Registrar& r, const NamedFrames& frames);
 void registerFieldPipelines(Registrar& r, const NamedFrames& frames);
 
+// upload/<b>/lights64-1280x720/cookies/<N>: prepareTextures of a fresh
+// prepared scene of the cookie field with N x N cookies, on the shipped-shader
+// backend (registered with its benchmarks, before the full-shader ones).
+void registerCookieUploads(Registrar& r);
+// The cookie sides of the upload benchmark: 64, 256, 1024 (256 with --quick).
+std::vector<int> cookieUploadSizes(bool quick);
+
 void registerLightmapModes(Registrar& r);
 void registerCurves(Registrar& r);
 void registerSuiteScenes(Registrar& r);
-
-// The field's scene name in every benchmark name.
-inline constexpr const char* kFieldScene = "lights64-1280x720";
 
 }  // namespace bench

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <optional>
 #include <vector>
 
 namespace bench {
@@ -20,6 +21,19 @@ void configure(benchmark::internal::Benchmark* b, const Timing& timing) {
   b->ComputeStatistics("min", minimum)->ComputeStatistics("max", maximum);
   if (timing.iterations > 0) b->Iterations(timing.iterations);
   else b->MinTime(timing.minTime);
+}
+
+// `made` = make() on a benchmark's first run (scenes are built only for the
+// benchmarks a filter keeps); a failure skips the benchmark with its message.
+template <class Made, class Make>
+bool makeOnce(benchmark::State& st, Made& made, const Make& make) {
+  try {
+    if (!made) made = make();
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+    return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -60,15 +74,19 @@ void Registrar::lazyFrame(const std::string& scene, const std::string& mode, Mak
   auto made = std::make_shared<std::shared_ptr<const BenchFrame>>();
   configure(benchmark::RegisterBenchmark(name("frame", scene, mode, "").c_str(),
                                          [run, made, make = std::move(make)](benchmark::State& st) {
-                                           try {
-                                             if (!*made) *made = make();
-                                           } catch (const std::exception& e) {
-                                             st.SkipWithError(e.what());
-                                             return;
-                                           }
-                                           timeFrame(st, *run, **made, false);
+                                           if (makeOnce(st, *made, make)) timeFrame(st, *run, **made, false);
                                          }),
             frameTiming_);
+}
+
+void Registrar::upload(const std::string& scene, const std::string& mode, const std::string& x, MakeFrame make) {
+  auto run = run_;
+  auto made = std::make_shared<std::optional<lighting::Frame>>();
+  configure(benchmark::RegisterBenchmark(name("upload", scene, mode, x).c_str(),
+                                         [run, made, make = std::move(make)](benchmark::State& st) {
+                                           if (makeOnce(st, *made, make)) timeUpload(st, *run, **made);
+                                         }),
+            pipelineTiming_);
 }
 
 void Registrar::pipeline(const std::string& scene, const std::string& mode,

@@ -37,13 +37,18 @@ class Registrar {
 
   void pipeline(const std::string& scene, const std::string& mode, const std::shared_ptr<const BenchFrame>& bench);
 
+  // upload/...: the textures of `make`'s frame (made on the first run, as
+  // lazyFrame's) uploaded by the shipped-shader backend (timeUpload).
+  using MakeFrame = std::function<lighting::Frame()>;
+  void upload(const std::string& scene, const std::string& mode, const std::string& x, MakeFrame make);
+
   const RunState& run() const { return *run_; }
 
  private:
   std::string name(const char* kind, const std::string& scene, const std::string& mode, const std::string& x) const;
 
   std::shared_ptr<RunState> run_;
-  Timing frameTiming_, pipelineTiming_;
+  Timing frameTiming_, pipelineTiming_;  // upload: pipelineTiming_ (Google Benchmark's count, also on softpipe)
 };
 
 }  // namespace bench

@@ -2,7 +2,12 @@
 
 #include "lighting/scene_loader.h"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -85,6 +90,80 @@ Scene topDownScene(int width, int height, const std::string& name) {
 }  // namespace
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The procedural cookies of the cookie field (FieldSpec::cookies): smooth
+// patterns with detail at every scale of the texture, so that filtering and
+// the coordinates matter, each light's its own (`seed`), none from a file.
+std::shared_ptr<CookieImage> cookieImage(int size, const std::function<double(double u, double v)>& value) {
+  auto image = std::make_shared<CookieImage>();
+  image->width = image->height = size;
+  image->texels.resize(std::size_t(size) * std::size_t(size));
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      image->texels[std::size_t(j) * std::size_t(size) + std::size_t(i)] =
+          float(std::clamp(value((i + 0.5) / size, (j + 0.5) / size), 0.0, 1.0));
+  return image;
+}
+
+// Directional, tiled: whole periods in u and v, so the tile repeats seamlessly.
+Cookie tiledCookie(int size) {
+  Cookie c;
+  c.files = {"procedural:tiled"};
+  c.images = {cookieImage(size, [](double u, double v) {
+    return 0.55 + 0.25 * std::cos(2 * kPi * u) * std::cos(4 * kPi * v) + 0.2 * std::sin(2 * kPi * (3 * u + v));
+  })};
+  c.sizeX = c.sizeY = kFieldCookieTile;
+  return c;
+}
+
+// Spot, projected: spokes that fade to 0 at the inscribed circle, so the
+// clamped edge (and everything outside the cone's square) is dark.
+Cookie spotCookie(int size, int seed) {
+  Cookie c;
+  c.files = {"procedural:spot"};
+  c.images = {cookieImage(size, [seed](double u, double v) {
+    const double x = 2 * u - 1, y = 2 * v - 1, r = std::sqrt(x * x + y * y);
+    const double fade = std::clamp((1 - r) / 0.15, 0.0, 1.0);
+    return fade * (0.35 + 0.65 * (0.5 + 0.5 * std::cos((5 + seed) * std::atan2(y, x) + 9 * r)));
+  })};
+  return c;
+}
+
+// Point, cube: one function of the direction, so the faces meet without seams.
+// Faces +X, -X, +Y, -Y, +Z, -Z: the direction of face coordinates (s, t) in
+// [-1, 1] by the cube-map table Vulkan and OpenGL share (lighting/cookie.h).
+Vec3 cubeDirection(int face, double s, double t) {
+  switch (face) {
+    case 0: return {1, -t, -s};
+    case 1: return {-1, -t, s};
+    case 2: return {s, 1, t};
+    case 3: return {s, -1, -t};
+    case 4: return {s, -t, 1};
+    default: return {-s, -t, -1};
+  }
+}
+
+Cookie cubeCookie(int size, int seed) {
+  Cookie c;
+  for (int face = 0; face < 6; ++face) {
+    c.files.push_back("procedural:cube");
+    c.images.push_back(cookieImage(size, [face, seed](double u, double v) {
+      const Vec3 d = glm::normalize(cubeDirection(face, 2 * u - 1, 2 * v - 1));
+      return 0.3 + 0.7 * (0.5 + 0.5 * std::cos((8 + 2 * seed) * std::atan2(d.z, d.x))) *
+                       (0.5 + 0.5 * std::cos(7 * d.y + seed));
+    }));
+  }
+  return c;
+}
+
+bool inCells(const FieldCell (&cells)[2], int i, int k) {
+  for (const FieldCell& c : cells)
+    if (c.column == i && c.row == k) return true;
+  return false;
+}
+
 void setSpecular(Object& object) {
   object.brdf = Brdf::Srp;
   object.metallic = kFieldMetallic;
@@ -141,6 +220,8 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
   }
   const double cellX = fieldX / spec.lightColumns, cellZ = kFieldZ / spec.lightRows;
   const double range = 0.85 * std::sqrt(cellX * cellZ / (1.6 * 0.9));
+  const bool cookieLights = spec.cookieLights || spec.cookies;
+  int seed = 0;  // each cookie its own pattern
   for (int i = 0; i < spec.lightColumns; ++i) {
     for (int k = 0; k < spec.lightRows; ++k) {
       Light l;
@@ -149,8 +230,27 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
       l.position = {x0 + (i + 0.5) * cellX, 0.4, z0 + (k + 0.5) * cellZ};
       l.range = range;
       l.color = {0.5 + 0.5 * (i % 2), 0.5 + 0.5 * (k % 2), 1.0};
+      if (cookieLights && inCells(kFieldCookieSpots, i, k)) {
+        l.type = LightType::Spot;
+        l.direction = {0, -1, 0};
+        l.spotAngleDeg = kFieldSpotAngleDeg;
+        l.innerSpotAngleDeg = kFieldSpotInnerAngleDeg;
+        if (spec.cookies) l.cookie = spotCookie(spec.cookieSize, seed++);
+      } else if (spec.cookies && inCells(kFieldCookieCubes, i, k)) {
+        l.cookie = cubeCookie(spec.cookieSize, seed++);
+      }
       s.lights.push_back(l);
     }
+  }
+  if (cookieLights) {
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(Vec3(kFieldCookieDirection[0], kFieldCookieDirection[1], kFieldCookieDirection[2]));
+    sun.color = {1.0, 0.95, 0.85};
+    sun.intensity = 0.5;
+    if (spec.cookies) sun.cookie = tiledCookie(spec.cookieSize);
+    s.lights.push_back(sun);
   }
   return s;
 }

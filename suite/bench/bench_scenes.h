@@ -50,7 +50,33 @@ struct FieldSpec {
   // Every tile and box with the srp BRDF (SPEC 3.8; kFieldMetallic,
   // kFieldSmoothness) instead of Lambert: what the specular lobe costs.
   bool specularBrdf = false;
+  // The cookie modes (SPEC 3.10 and 9, "cookies on and off"). cookieLights:
+  // the grid with the lights that carry the cookies: one directional light
+  // over the field (kFieldCookieDirection) is added and the point lights of
+  // kFieldCookieSpots become spots pointing straight down (kFieldSpotAngleDeg);
+  // still 64 point/spot lights, all in view, and one directional. cookies:
+  // the same lights (cookieLights implied) with procedural cookies of
+  // cookieSize texels a side (per face for a cube): a tiled 2D cookie on the
+  // directional light, a projected 2D one on each spot, and a cube cookie on
+  // each point light of kFieldCookieCubes. That is 3 2D and 2 cube cookies,
+  // within a frame's slots (lighting::kMaxCookieTextures, kMaxCookieCubes).
+  bool cookieLights = false;
+  bool cookies = false;
+  int cookieSize = 256;
 };
+
+// The cookie field's lights (FieldSpec::cookieLights): the grid cells
+// (column, row) of the two spots and of the two cube-cookied point lights,
+// the directional light's direction (the way its light travels) and its
+// tiled cookie's world size, and the spots' outer and inner cone.
+struct FieldCell {
+  int column, row;
+};
+inline constexpr FieldCell kFieldCookieSpots[] = {{2, 5}, {5, 2}};
+inline constexpr FieldCell kFieldCookieCubes[] = {{1, 1}, {6, 6}};
+inline constexpr double kFieldCookieDirection[] = {0.35, -1.0, 0.2};
+inline constexpr double kFieldCookieTile = 1.8;  // world units a repeat, both axes
+inline constexpr double kFieldSpotAngleDeg = 120, kFieldSpotInnerAngleDeg = 90;
 
 // The srp material of the field's specular modes: a highlight of a few
 // pixels under each light seen from straight above (smoothness 0.8), with a

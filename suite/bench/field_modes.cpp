@@ -1,6 +1,7 @@
 // The 1280x720 64-light field in every mode: frame, frame_readback (not on a
 // slow driver), pipeline. Error counters against the ideal reference of the
-// field (one per profile: all-lights, per-object and full-shader share one).
+// field (one per profile, BRDF and light set: all-lights, per-object and
+// full-shader share one).
 #include "baking/bake.h"
 #include "suite/bench/bench_families.h"
 #include "suite/bench/bench_scenes.h"
@@ -10,19 +11,6 @@ namespace {
 
 using namespace lighting;
 
-// The modes of the speed-against-error plot: each profile and light path as
-// shipped (specialised shader), and with the full shader, which shows what
-// specialization buys; the deferred path in each light buffer (SPEC 3.7),
-// whose error against the same ideal reference as all-lights is what the
-// buffer's format costs. A slow driver skips the slowest, full-shader
-// all-lights (some 30 s a frame), and still has eight.
-struct ModeSpec {
-  FrameMode scene;  // which field: all lights, per-object lists, legacy, deferred
-  bool fullShader;
-  std::string name;
-  bool specularBrdf = false;  // the srp BRDF on every object (SPEC 3.8)
-};
-
 // The specular modes (SPEC 9, "the specular BRDF against Lambert"): the same
 // field and lights with every object srp, forward with all lights and with
 // per-object lists, each specialised and with the full shader; their error
@@ -30,43 +18,79 @@ struct ModeSpec {
 // same name without "srp-brdf" are what they cost against.
 const char* const kSpecularSuffix = "srp-brdf";
 
-std::vector<ModeSpec> modesOf(const RunState& run) {
-  std::vector<ModeSpec> modes = {{FrameMode::AllLights, false, modeName(FrameMode::AllLights)},
-                                 {FrameMode::PerObject, false, modeName(FrameMode::PerObject)},
-                                 {FrameMode::Legacy4x4, false, modeName(FrameMode::Legacy4x4)},
-                                 {FrameMode::PerObject, true, modeName(FrameMode::PerObject) + "-full-shader"},
-                                 {FrameMode::Legacy4x4, true, modeName(FrameMode::Legacy4x4) + "-full-shader"}};
-  if (!run.slow()) modes.insert(modes.begin() + 3, {FrameMode::AllLights, true, "full-shader"});
-  if (run.settings.quick) modes.resize(2);
-  const std::string specular = kSpecularSuffix;
-  modes.push_back({FrameMode::AllLights, false, specular, true});
-  if (!run.settings.quick) {
-    modes.push_back({FrameMode::PerObject, false, modeName(FrameMode::PerObject) + "-" + specular, true});
-    if (!run.slow()) modes.push_back({FrameMode::AllLights, true, specular + "-full-shader", true});
-    modes.push_back({FrameMode::PerObject, true, modeName(FrameMode::PerObject) + "-" + specular + "-full-shader", true});
-  }
-  for (const FrameMode deferred : {FrameMode::DeferredHdr32, FrameMode::DeferredHdr16, FrameMode::DeferredLdr8})
-    modes.push_back({deferred, false, modeName(deferred)});
-  return modes;
+FieldModeSpec modeOf(FrameMode scene, bool fullShader, std::string name, bool specularBrdf = false) {
+  FieldModeSpec mode;
+  mode.name = std::move(name);
+  mode.field.mode = scene;
+  mode.field.specularBrdf = specularBrdf;
+  mode.fullShader = fullShader;
+  return mode;
+}
+
+// The ideal reference a mode's error is against: one per profile, BRDF and
+// light set (all-lights, per-object and full-shader share one; the deferred
+// modes take the forward field's, fieldModes).
+std::string referenceKeyOf(const FieldModeSpec& mode) {
+  std::string key = std::string(kFieldScene) + (mode.field.mode == FrameMode::Legacy4x4 ? "/legacy" : "/srp");
+  if (mode.field.specularBrdf) key.append("-").append(kSpecularSuffix);
+  if (mode.field.cookies) key.append("-").append(kCookiesMode);
+  else if (mode.field.cookieLights) key.append("-").append(kCookieLightsMode);
+  return key;
 }
 
 }  // namespace
 
+// The modes of the speed-against-error plot: each profile and light path as
+// shipped (specialised shader), and with the full shader, which shows what
+// specialization buys; the deferred path in each light buffer (SPEC 3.7),
+// whose error against the same ideal reference as all-lights is what the
+// buffer's format costs; cookies on and off (SPEC 3.10 and 9): `cookies`
+// against `cookie-lights`, the same lights without their cookies, so the
+// pair differs by what sampling the cookies costs, each against the ideal
+// reference of its own scene. A slow driver skips the slowest, full-shader
+// all-lights (some 30 s a frame), and still has the rest.
+std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow) {
+  std::vector<FieldModeSpec> modes = {modeOf(FrameMode::AllLights, false, modeName(FrameMode::AllLights)),
+                                      modeOf(FrameMode::PerObject, false, modeName(FrameMode::PerObject)),
+                                      modeOf(FrameMode::Legacy4x4, false, modeName(FrameMode::Legacy4x4)),
+                                      modeOf(FrameMode::PerObject, true, modeName(FrameMode::PerObject) + "-full-shader"),
+                                      modeOf(FrameMode::Legacy4x4, true, modeName(FrameMode::Legacy4x4) + "-full-shader")};
+  if (!slow) modes.insert(modes.begin() + 3, modeOf(FrameMode::AllLights, true, "full-shader"));
+  if (quick) modes.resize(2);
+  const std::string specular = kSpecularSuffix;
+  modes.push_back(modeOf(FrameMode::AllLights, false, specular, true));
+  if (!quick) {
+    modes.push_back(modeOf(FrameMode::PerObject, false, modeName(FrameMode::PerObject) + "-" + specular, true));
+    if (!slow) modes.push_back(modeOf(FrameMode::AllLights, true, specular + "-full-shader", true));
+    modes.push_back(
+        modeOf(FrameMode::PerObject, true, modeName(FrameMode::PerObject) + "-" + specular + "-full-shader", true));
+  }
+  // Cookies on and off: the pair in the full set (bench.cookie-smoke runs it
+  // filtered); --quick leaves it out, one cookie frame costing about a
+  // second on lavapipe and tens on softpipe (docs/performance.md).
+  if (!quick) {
+    modes.push_back(modeOf(FrameMode::AllLights, false, kCookieLightsMode));
+    modes.back().field.cookieLights = true;
+    modes.push_back(modeOf(FrameMode::AllLights, false, kCookiesMode));
+    modes.back().field.cookies = true;
+  }
+  for (const FrameMode deferred : {FrameMode::DeferredHdr32, FrameMode::DeferredHdr16, FrameMode::DeferredLdr8})
+    modes.push_back(modeOf(deferred, false, modeName(deferred)));
+  return modes;
+}
+
 FieldModes fieldModes(const RunState& run) {
   const std::string scene = kFieldScene;
   FieldModes frames;
-  for (const ModeSpec& mode : modesOf(run)) {
-    FieldSpec field;
-    field.mode = mode.scene;
-    field.specularBrdf = mode.specularBrdf;
+  for (const FieldModeSpec& mode : fieldModeSpecs(run.settings.quick, run.slow())) {
+    const FieldSpec& field = mode.field;
     BenchFrameSpec spec;
     spec.prepared = baking::prepareBakedScene(fieldScene(field, scene + "-" + mode.name));
     spec.fullShader = mode.fullShader;
-    spec.referenceKey = scene + (mode.scene == FrameMode::Legacy4x4 ? "/legacy" : "/srp") +
-                        (mode.specularBrdf ? "-" + std::string(kSpecularSuffix) : "");
+    spec.referenceKey = referenceKeyOf(mode);
     spec.errorKey = scene + "/" + mode.name;
     spec.everyLightInView = true;
-    if (deferredBufferOf(mode.scene)) {
+    if (deferredBufferOf(field.mode)) {
       // The deferred modes share the srp reference of the forward field, made
       // from that scene whichever mode runs first: a deferred scene's own
       // reference includes its buffer's saturation (ldr8), which is part of

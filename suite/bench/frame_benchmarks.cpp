@@ -3,9 +3,12 @@
 // docs/bench-format.md. What runs:
 //   frame/<b>/lights64-1280x720/<mode>           mode: all-lights, per-object, legacy-4+4, and each
 //                                                with the full shader (full-shader = all-lights);
-//                                                deferred-hdr32, deferred-hdr16, deferred-ldr8
+//                                                the srp-brdf modes; cookie-lights and cookies
+//                                                (cookies off and on); deferred-hdr32, -hdr16, -ldr8
 //   frame_readback/<b>/lights64-1280x720/<mode>
 //   pipeline/<b>/lights64-1280x720/<mode>         preparePipeline with an empty cache
+//   upload/<b>/lights64-1280x720/cookies/<n>      prepareTextures of a fresh copy of the cookie
+//                                                field, n x n cookies: n = 64, 256, 1024 (--quick: 256)
 //   frame/<b>/curve-lights/all-lights/<n>         n = 1, 2, 4 ... 256 lights (the cut keeps 64), 640x360
 //   frame/<b>/curve-lights/per-object/<n>
 //   frame/<b>/curve-lights/deferred-<buffer>/<n>  hdr32, hdr16, ldr8: deferred against forward
@@ -24,7 +27,7 @@
 //
 // The steps: flags (bench_settings), the run's state and its pipeline cache
 // folder (run_state), the backend, the JSON context and the time source
-// (time_source), the four families (bench_families.h) registered through
+// (time_source), the families (bench_families.h) registered through
 // the Registrar, then Google Benchmark with the plain-name reporters
 // (bench_reporters).
 #include "suite/bench/frame_benchmarks.h"
@@ -67,7 +70,8 @@ void addDeviceContext(const RunState& run) {
 // current when it is created and never again, and a destroyed one leaves
 // none current: so every benchmark of the shipped-shader backend first, then
 // full-shader (its backend is created on first use), then pipeline (a fresh
-// backend per iteration).
+// backend per iteration). The cookie uploads use the shipped-shader backend
+// too: last of its benchmarks.
 void registerAll(const std::shared_ptr<RunState>& run) {
   Registrar registrar(run);
   const FieldModes field = fieldModes(*run);
@@ -75,6 +79,7 @@ void registerAll(const std::shared_ptr<RunState>& run) {
   registerLightmapModes(registrar);
   registerCurves(registrar);
   if (run->settings.suiteScenes) registerSuiteScenes(registrar);
+  registerCookieUploads(registrar);  // the shipped-shader backend's last: the draws after it warm up again
   registerFieldModes(registrar, field.full);
   registerFieldPipelines(registrar, field.pipeline);
 }

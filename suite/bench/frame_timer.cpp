@@ -4,6 +4,7 @@
 #include "suite/bench/wall_clock.h"
 
 #include <exception>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -107,6 +108,54 @@ void timePipeline(benchmark::State& state, RunState& run, const BenchFrame& benc
     return;
   }
   state.counters["lights"] = double(bench.load.keptLights);
+}
+
+namespace {
+
+// `frame` drawn from a fresh copy of its prepared scene (the cookie images
+// are shared, not copied: they are what the backend uploads).
+lighting::Frame withFreshScene(const lighting::Frame& frame) {
+  lighting::Frame fresh = frame;
+  fresh.prepared = std::make_shared<lighting::PreparedScene>(*frame.prepared);
+  return fresh;
+}
+
+double cookieTexels(const lighting::Frame& frame) {
+  double texels = 0;
+  for (const auto* lights : {&frame.cookies.textureLights, &frame.cookies.cubeLights})
+    for (const int l : *lights)
+      for (const auto& image : frame.scene().lights[std::size_t(l)].cookie->images)
+        texels += double(image->width) * image->height;
+  return texels;
+}
+
+}  // namespace
+
+void timeUpload(benchmark::State& state, RunState& run, const lighting::Frame& frame) {
+  backends::Backend& backend = *run.specialised;
+  try {
+    lighting::Frame current = withFreshScene(frame);
+    backend.prepareTextures(current);
+    for (auto _ : state) {
+      // The previous copy lives until the new one is made: never at its address.
+      lighting::Frame next = withFreshScene(frame);
+      const auto start = Clock::now();
+      backend.prepareTextures(next);
+      state.SetIterationTime(millisecondsSince(start) / 1e3);
+      current = std::move(next);
+    }
+  } catch (const std::exception& e) {
+    run.lastDrawn.erase(&backend);
+    state.SkipWithError(e.what());
+    return;
+  }
+  run.lastDrawn.erase(&backend);  // its textures are no benchmark frame's now
+  const double texels = cookieTexels(frame);
+  auto& c = state.counters;
+  c["cookie_textures"] = double(frame.cookies.textureLights.size());
+  c["cookie_cubes"] = double(frame.cookies.cubeLights.size());
+  c["cookie_texels"] = texels;
+  c["texels_per_s"] = benchmark::Counter(texels, benchmark::Counter::kIsIterationInvariantRate);
 }
 
 }  // namespace bench

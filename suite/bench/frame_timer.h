@@ -30,4 +30,15 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
 // compile in the first draw, which this does not time.
 void timePipeline(benchmark::State& state, RunState& run, const BenchFrame& bench);
 
+// Texture uploads (SPEC 3.10's cookies, and any baked maps): every iteration
+// copies `frame`'s prepared scene into a fresh one (untimed: manual time), so
+// that the shipped-shader backend, which uploads once per prepared scene,
+// must upload again; only prepareTextures() is timed (releasing the previous
+// scene's textures included). One untimed upload first (first-use
+// allocations). Vulkan waits for the copy to finish inside prepareTextures;
+// GL times the calls (llvmpipe copies the texels in them). Afterwards the
+// next draw benchmark warms up again (RunState::lastDrawn), so it never
+// times the upload of its own textures.
+void timeUpload(benchmark::State& state, RunState& run, const lighting::Frame& frame);
+
 }  // namespace bench

@@ -1,13 +1,16 @@
 # Shared by the bench.*-smoke scripts: run render_bench on Vulkan with
-# --quick, turn "no device" into ctest's skip, and walk the JSON it wrote.
+# --quick (or the set RENDER_BENCH_SET names: "" for the full set), turn "no device" into ctest's skip, and walk the JSON it wrote.
 # Expects -DRENDER_BENCH=<render_bench> -DOUT=<json file>.
 
 # Runs render_bench with `filter` and `extra` arguments; leaves the JSON in
 # `json` and the number of entries in `count` (the caller's scope).
+if(NOT DEFINED RENDER_BENCH_SET)
+  set(RENDER_BENCH_SET --quick)
+endif()
 macro(run_render_bench filter)
   file(REMOVE "${OUT}")
   execute_process(
-    COMMAND "${RENDER_BENCH}" --backend=vulkan --quick --benchmark_min_time=0.01 ${ARGN}
+    COMMAND "${RENDER_BENCH}" --backend=vulkan ${RENDER_BENCH_SET} --benchmark_min_time=0.01 ${ARGN}
             "--benchmark_filter=${filter}" "--benchmark_out=${OUT}" --benchmark_out_format=json
     RESULT_VARIABLE status)
   if(status EQUAL 3)

@@ -8,6 +8,7 @@
 set(deferred_variant_originals
   "attenuation/*.json"
   "brdf/*.json"
+  "cookies/*.json"
   "shadowmask/strength-0-half-1.json")
 
 # The variant's "pipeline" member, added after "camera". An original must not
@@ -24,4 +25,6 @@ set(deferred_variant_intro "Deferred variant (light buffer <BUFFER>) of <ORIGINA
 set(deferred_variant_note_brdf-metallic-1 "Here the light pass adds lights whose diffuse colour is 0: everything it adds is F0 times the lobe, read back from the G-buffer's material target.")
 set(deferred_variant_note_brdf-translated-1e5 "Here V comes from the position the light pass reconstructs from depth, camera-relative, so it too must not see the 1e5 offset.")
 set(deferred_variant_note_brdf-terms-srp "Here the G-buffer's base target carries ambient and lightmap times the BRDF's diffuse colour, and the material target metallic and smoothness for the light pass's lobes.")
+set(deferred_variant_note_cookies-point-cube-seams-corner "Here the cube is sampled in the light pass at the position rebuilt from depth, through the point light's icosphere volume.")
+set(deferred_variant_note_cookies-spot-cone-crosses-light-plane "Here the spot's cone volume bounds the light pass: pixels behind the light's plane are outside it and must stay unlit, as q.z <= 0 gives 0 forward.")
 set(deferred_variant_note_shadowmask-strength-0-half-1 "Here the G-buffer's base target carries the lightmap (the demoted light) and its mask target the shadow mask, sampled where the fragment is, and the light pass applies each light's channel from it.")

@@ -1,0 +1,112 @@
+// Light cookies (SPEC 3.10) on the GPU: where a point looks up each slot's
+// cookie and the bilinear sample at level 0. The CPU decided everything
+// else (lighting/cookie_packing.h): which slot each kept light's cookie has,
+// and per slot the affine map from the camera-relative p the shaders see to
+// the light's cookie space, so the lookup is one matrix product and the step
+// of SPEC 3.10 for its kind. The double-precision copy is lighting/cookie.cpp.
+//
+// Each texture is its own sampler, not an array: GLSL 330 (the OpenGL
+// backend, which binds them by name) indexes sampler arrays only with
+// constants. The 2D samplers repeat (directional) or clamp to edge (spot) as
+// the backend sets them up per slot; the cubes are seamless (Vulkan always,
+// OpenGL with GL_TEXTURE_CUBE_MAP_SEAMLESS). Every texture holds the cookie's
+// value (alpha, or the first channel) in r.
+#ifndef LIGHTCTS_COOKIES_GLSL
+#define LIGHTCTS_COOKIES_GLSL
+
+#include "features.glsl"
+#include "mutants.glsl"
+#include "light_data.glsl"
+
+// lighting::GpuCookie, std140.
+struct Cookie {
+  mat4 toCookie;  // camera-relative p (w = 1) to directional (u, v, 0, 1), spot (q, 1), point (p - position, 1)
+  vec4 params;    // x: kind (kCookie*), y: spot 0.5 / tan(spot_angle / 2), z: texture index of its kind
+};
+
+// lighting::GpuCookieBlock: the four 2D slots, then the two cube slots.
+layout(std140, set = 3, binding = 0) uniform CookieBlock {
+  Cookie cookies[6];
+} cookieData;
+
+layout(set = 3, binding = 1) uniform sampler2D cookieTexture0;
+layout(set = 3, binding = 2) uniform sampler2D cookieTexture1;
+layout(set = 3, binding = 3) uniform sampler2D cookieTexture2;
+layout(set = 3, binding = 4) uniform sampler2D cookieTexture3;
+layout(set = 3, binding = 5) uniform samplerCube cookieCube0;
+layout(set = 3, binding = 6) uniform samplerCube cookieCube1;
+
+const int kCookieNone = 0;  // lighting::GpuCookieKind
+const int kCookieDirectional = 1;
+const int kCookieSpot = 2;
+const int kCookiePoint = 3;
+const int kCookieSlots = 6;
+
+// Every slot's cookie value at one point. A shader looks all of them up once
+// per invocation (cookieValuesAt) and each light reads its slot's
+// (cookieAttenuation), rather than each light sampling: a light cannot pick
+// its sampler by index (GLSL 330), and a chain of the six samplers per light
+// costs every light six samples on a device that runs both sides of a
+// uniform branch (llvmpipe, measured: 9x the frame time of the 64-light
+// benchmark field with five cookies).
+struct CookieValues {
+  float slot[6];
+};
+
+// SPEC 3.10 for a 2D slot (directional: repeat; spot: q.z <= 0 gives 0, then
+// the projection, clamped to edge by the sampler); mip level 0 only.
+float textureCookieValue(Cookie cookie, sampler2D image, vec3 p) {
+  int kind = int(cookie.params.x);
+  if (kind == kCookieNone) return 1.0;
+  vec3 q = (cookie.toCookie * vec4(p, 1.0)).xyz;
+  vec2 uv;
+  if (kind == kCookieSpot) {
+    // The backward cone: q.z <= 0 gives 0, not the mirrored projection.
+    if (q.z <= 0.0) return 0.0;
+    uv = 0.5 + q.xy * (cookie.params.y / q.z);
+  } else {
+    uv = q.xy;  // tiled: the sampler repeats
+    if (MUTANT == MUTANT_DIRECTIONAL_COOKIE_CLAMPED) {
+      // Mutant: clamp to edge instead (half a texel in from each border).
+      vec2 halfTexel = 0.5 / vec2(textureSize(image, 0));
+      uv = clamp(uv, halfTexel, 1.0 - halfTexel);
+    }
+  }
+  if (MUTANT == MUTANT_COOKIE_V_FLIPPED) uv.y = 1.0 - uv.y;
+  return textureLod(image, uv, 0.0).r;
+}
+
+// SPEC 3.10 for a cube slot: the direction p - position, seamless.
+float cubeCookieValue(Cookie cookie, samplerCube image, vec3 p) {
+  if (int(cookie.params.x) == kCookieNone) return 1.0;
+  vec3 q = (cookie.toCookie * vec4(p, 1.0)).xyz;
+  // Mutant: the cube turned 90 degrees about the light's y axis.
+  if (MUTANT == MUTANT_CUBE_COOKIE_ROTATED) q = vec3(q.z, q.y, -q.x);
+  return textureLod(image, q, 0.0).r;
+}
+
+// Every slot's value at the camera-relative p; all ones without COOKIES.
+CookieValues cookieValuesAt(vec3 p) {
+  CookieValues values;
+  for (int s = 0; s < kCookieSlots; ++s) values.slot[s] = 1.0;
+  if (!COOKIES) return values;
+  values.slot[0] = textureCookieValue(cookieData.cookies[0], cookieTexture0, p);
+  values.slot[1] = textureCookieValue(cookieData.cookies[1], cookieTexture1, p);
+  values.slot[2] = textureCookieValue(cookieData.cookies[2], cookieTexture2, p);
+  values.slot[3] = textureCookieValue(cookieData.cookies[3], cookieTexture3, p);
+  values.slot[4] = cubeCookieValue(cookieData.cookies[4], cookieCube0, p);
+  values.slot[5] = cubeCookieValue(cookieData.cookies[5], cookieCube1, p);
+  return values;
+}
+
+// SPEC 3.10: the value `light`'s cookie multiplies its attenuation by, from
+// the values looked up at the point being lit; 1 for a light without one
+// (spotDirection.w < 0).
+float cookieAttenuation(Light light, CookieValues values) {
+  if (!COOKIES) return 1.0;
+  int slot = int(light.spotDirection.w);
+  if (slot < 0) return 1.0;
+  return values.slot[slot];
+}
+
+#endif
