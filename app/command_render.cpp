@@ -10,6 +10,7 @@
 #include "imaging/image_files.h"
 #include "reference/reference_renderer.h"
 
+#include <cmath>
 #include <filesystem>
 #include <ostream>
 
@@ -86,9 +87,14 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
       out << comparison::verdictName(check.verdict) << " " << name << ": " << check.frames.size()
           << " frames; frame " << check.evidenceFrame << " in detail:\n  ";
     comparison::printComparison(out, check.evidence().comparison, name);
+    // SPEC 3.9: what the map's resolution and filter cost against exact shadows.
+    if (check.frames.size() == 1 && !std::isnan(check.frames.front().idealError))
+      out << "  error against ray-traced shadows (--ideal, information, not a verdict): "
+          << check.frames.front().idealError << '\n';
     if (check.verdict == comparison::Verdict::Pass) return kExitSuccess;
     const std::string dir = evidenceDir.empty() ? "lightcts-evidence/" + name : evidenceDir;
-    comparison::writeEvidence(dir, check.evidence().comparison, check.evidenceResult, check.evidenceReference, name);
+    comparison::writeEvidence(dir, check.evidence().comparison, check.evidenceResult, check.evidenceReference, name,
+                              &check.evidenceShadowMaps);
     out << "evidence: " << dir << " (frame " << check.evidenceFrame << ")\n";
     return kExitConformanceFailure;
   });

@@ -80,6 +80,16 @@ class Backend {
   // timestamp queries (Vulkan) or GL_TIME_ELAPSED queries (OpenGL); empty
   // when the device offers none. Benchmarks report it beside wall time.
   virtual std::optional<double> lastDrawDeviceMilliseconds() const { return std::nullopt; }
+  // SPEC 3.9's evidence: the shadow maps the last draw() rendered, read back,
+  // one single-channel image (the stored depth) per view in the order of
+  // lighting::shadowPassViews (the 2D slots, then each cube slot's six
+  // faces), row 0 = texel row 0 (mv = 0.5 / N); empty without shadow maps.
+  virtual std::vector<imaging::Image> readShadowMaps() = 0;
+  // The device's time for the last draw()'s shadow passes alone, in
+  // milliseconds (the benchmark times them apart from the lighting; they are
+  // part of lastDrawDeviceMilliseconds), when it has timers; empty
+  // otherwise or without shadow maps.
+  virtual std::optional<double> lastShadowPassDeviceMilliseconds() const { return std::nullopt; }
 
   imaging::Image render(const lighting::Frame& frame) {
     draw(frame);

@@ -56,6 +56,28 @@ void writeErrorMask(const fs::path& target, const imaging::Image& mask) {
   imaging::writePng8(target.string(), mask.width, mask.height, mask.channels, bytes);
 }
 
+// A shadow map's depth (channel 0) as grey levels for people: the stored
+// depths below the clear value 1 stretched from black (the nearest) to light
+// grey, 1 (nothing there) white. A perspective map's depths crowd near 1, so
+// an unstretched picture would be white all over; the EXR keeps the values.
+void writeDepthPng(const std::string& target, const imaging::Image& map) {
+  float nearest = 1, farthest = 0;
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x)
+      if (const float d = map.at(x, y, 0); d < 1) {
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
+      }
+  const double span = farthest > nearest ? double(farthest) - nearest : 1.0;
+  std::vector<std::uint8_t> bytes(std::size_t(map.width) * map.height, 255);
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x)
+      if (const float d = map.at(x, y, 0); d < 1)
+        bytes[std::size_t(y) * map.width + x] =
+            std::uint8_t(std::lround(std::clamp((d - nearest) / span, 0.0, 1.0) * 200.0));
+  imaging::writePng8(target, map.width, map.height, 1, bytes);
+}
+
 }  // namespace
 
 void printComparison(std::ostream& out, const Comparison& comparison, std::string_view testName) {
@@ -66,6 +88,12 @@ void printComparison(std::ostream& out, const Comparison& comparison, std::strin
     out << "  " << comparison.nonFinitePixels << " non-finite pixels (NaN or infinity in the result always fail)\n";
   if (comparison.maxFailingPixels > 0) out << "  up to " << comparison.maxFailingPixels << " failing pixels allowed\n";
   if (comparison.toleranceScale != 1) out << "  tolerances scaled by " << number(comparison.toleranceScale) << '\n';
+  if (comparison.shadowedPixels > 0)
+    out << "  " << comparison.ambiguousShadowPixels << " of " << comparison.shadowedPixels
+        << " shadowed pixels have an admissible shadow interval wider than 0.01"
+        << (comparison.defectiveScene ? ": more than 5%, a DEFECTIVE SCENE (SPEC 3.9), it fails whatever the pixels say"
+                                      : "")
+        << '\n';
   if (comparison.expectFail) {
     if (comparison.comparisonPassed)
       out << "  expect_fail: the expected mismatch went UNDETECTED (the comparison passed)\n";
@@ -81,7 +109,9 @@ void printComparison(std::ostream& out, const Comparison& comparison, std::strin
     for (int c = 0; c < 3; ++c)
       out << " [" << number(allowedLow(p, c, comparison.toleranceScale)) << ", "
           << number(allowedHigh(p, c, comparison.toleranceScale)) << ']';
-    out << " excess " << number(p.excess) << (p.nonFinite ? " non-finite" : "") << '\n';
+    out << " excess " << number(p.excess) << (p.nonFinite ? " non-finite" : "");
+    if (p.shadowed) out << " shadow s in [" << number(p.shadowLo) << ", " << number(p.shadowHi) << ']';
+    out << '\n';
   }
   const long long unlisted = comparison.failingPixels - static_cast<long long>(comparison.worst.size());
   if (!comparison.worst.empty() && unlisted > 0) out << "  and " << unlisted << " more failing pixels\n";
@@ -101,7 +131,9 @@ Json comparisonJson(const Comparison& comparison, std::string_view testName) {
                          {"tolerance", jsonTriple(p.tolerance)},
                          {"allowed", allowed},
                          {"excess", jsonNumber(p.excess)},
-                         {"non_finite", p.nonFinite}});
+                         {"non_finite", p.nonFinite},
+                         {"shadow_interval", p.shadowed ? Json::array({jsonNumber(p.shadowLo), jsonNumber(p.shadowHi)})
+                                                        : Json(nullptr)}});
   }
   return Json{{"test", testName},
               {"verdict", verdictName(comparison.verdict)},
@@ -118,11 +150,15 @@ Json comparisonJson(const Comparison& comparison, std::string_view testName) {
               {"max_abs_error", jsonNumber(comparison.maxAbsError)},
               {"max_error_over_tolerance", jsonNumber(comparison.maxErrorOverTolerance)},
               {"rmse", jsonNumber(comparison.rmse)},
+              {"shadowed_pixels", comparison.shadowedPixels},
+              {"ambiguous_shadow_pixels", comparison.ambiguousShadowPixels},
+              {"defective_scene", comparison.defectiveScene},
               {"worst", worst}};
 }
 
 void writeEvidence(const std::string& dir, const Comparison& comparison, const imaging::Image& result,
-                   const reference::ReferenceImages& reference, std::string_view testName) {
+                   const reference::ReferenceImages& reference, std::string_view testName,
+                   const ShadowMapEvidence* shadowMaps) {
   const fs::path folder(dir);
   fs::create_directories(folder);
   // A summary from an earlier run would vouch for the files about to be
@@ -135,6 +171,20 @@ void writeEvidence(const std::string& dir, const Comparison& comparison, const i
   imaging::writePngPreview(path("result.png"), result);
   imaging::writePngPreview(path("reference.png"), reference.value);
   writeErrorMask(folder / "error-mask.png", comparison.errorMask);
+  // SPEC 3.9: the backend's maps as read back, and the reference's (depth,
+  // then the admissible [lo, hi] each texel allows), one pair per view.
+  if (shadowMaps) {
+    for (std::size_t v = 0; v < shadowMaps->backend.size(); ++v) {
+      const std::string stem = "shadow-map-" + std::to_string(v);
+      imaging::writeExr(path((stem + "-backend.exr").c_str()), shadowMaps->backend[v]);
+      writeDepthPng(path((stem + "-backend.png").c_str()), shadowMaps->backend[v]);
+    }
+    for (std::size_t v = 0; v < shadowMaps->reference.size(); ++v) {
+      const std::string stem = "shadow-map-" + std::to_string(v);
+      imaging::writeExr(path((stem + "-reference.exr").c_str()), shadowMaps->reference[v]);
+      writeDepthPng(path((stem + "-reference.png").c_str()), shadowMaps->reference[v]);
+    }
+  }
   imaging::writeFileAtomically(folder / "summary.json", comparisonJson(comparison, testName).dump(2) + "\n");
 }
 

@@ -31,7 +31,17 @@ nlohmann::ordered_json comparisonJson(const Comparison& comparison, std::string_
 // written to a hidden temporary name and renamed into place. Throws
 // std::runtime_error (imaging::ImageFileError, std::filesystem::filesystem_error)
 // when a file cannot be written.
+//
+// SPEC 3.9's shadow maps, when given: shadow-map-<v>-backend.exr/.png (the
+// backend's stored depth, read back) and shadow-map-<v>-reference.exr/.png
+// (RGB: the reference's depth, then the lowest and highest depth a correct
+// pass may store), one per view in lighting::shadowPassViews order.
+struct ShadowMapEvidence {
+  std::vector<imaging::Image> backend;
+  std::vector<imaging::Image> reference;
+};
 void writeEvidence(const std::string& dir, const Comparison& comparison, const imaging::Image& result,
-                   const reference::ReferenceImages& reference, std::string_view testName);
+                   const reference::ReferenceImages& reference, std::string_view testName,
+                   const ShadowMapEvidence* shadowMaps = nullptr);
 
 }  // namespace comparison

@@ -149,6 +149,11 @@ Comparison compareImages(const imaging::Image& result, const reference::Referenc
       } else if (outOfTolerance) {
         paint(out.errorMask, x, y, 1, 0, 0);
       }
+      if (!reference.shadowInterval.pixels.empty() && reference.shadowInterval.at(x, y, 2) != 0.0f) {
+        pixel.shadowed = true;
+        pixel.shadowLo = reference.shadowInterval.at(x, y, 0);
+        pixel.shadowHi = reference.shadowInterval.at(x, y, 1);
+      }
       if (nonFinite || (!masked && outOfTolerance)) {
         ++out.failingPixels;
         worst.offer(pixel);
@@ -159,7 +164,10 @@ Comparison compareImages(const imaging::Image& result, const reference::Referenc
   out.rmse = samples > 0 ? std::sqrt(sumOfSquares / double(samples)) : 0.0;
   out.worst = std::move(worst).sorted();
   out.comparisonPassed = out.failingPixels <= expect.maxFailingPixels && out.nonFinitePixels == 0;
-  const bool asExpected = out.comparisonPassed != out.expectFail && out.nonFinitePixels == 0;
+  out.shadowedPixels = reference.shadowedPixels;
+  out.ambiguousShadowPixels = reference.ambiguousShadowPixels;
+  out.defectiveScene = reference.shadowAmbiguityExceedsCap();
+  const bool asExpected = out.comparisonPassed != out.expectFail && out.nonFinitePixels == 0 && !out.defectiveScene;
   out.verdict = asExpected ? Verdict::Pass : Verdict::Fail;
   return out;
 }

@@ -20,6 +20,11 @@ struct PixelReport {
   float tolerance[3] = {};  // as in reference.tolerance; the allowed |difference| is this * toleranceScale
   double excess = 0;        // max over RGB of |difference| - allowed; +inf when non-finite
   bool nonFinite = false;   // NaN or infinity in any channel of the result
+  // SPEC 3.9: where a light with a real-time shadow lights the pixel, the
+  // admissible interval [s_lo, s_hi] of its widest lookup (the reference's
+  // shadowInterval; absent when the reference kept none).
+  bool shadowed = false;
+  float shadowLo = 1, shadowHi = 1;
 };
 
 struct Comparison {
@@ -39,6 +44,13 @@ struct Comparison {
   double rmse = 0;
   std::vector<PixelReport> worst;  // largest excess first; ties by row, then column
   bool comparisonPassed = false;   // failingPixels <= maxFailingPixels and nonFinitePixels == 0
+  // SPEC 3.9's cap, copied from the reference: the compared pixels a light
+  // with a real-time shadow lights, those whose admissible interval is wider
+  // than 0.01, and whether they exceed 5% (a defective scene: Fail, whatever
+  // the pixels say, since ambiguity must never pass for agreement).
+  long long shadowedPixels = 0;
+  long long ambiguousShadowPixels = 0;
+  bool defectiveScene = false;
   bool expectFail = false;
   // Pass when comparisonPassed != expectFail: an expect_fail scene exists to
   // prove a known mismatch is detected, so it passing the comparison is a Fail.

@@ -40,6 +40,8 @@ auto timed(double& total, Work&& work) {
 reference::ReferenceOptions referenceOptionsFor(const lighting::Scene& scene) {
   reference::ReferenceOptions options;
   options.bakedLightsRealtime = scene.expect.against == lighting::CompareAgainst::Realtime;
+  // SPEC 3.9: the failing pixels' shadow intervals go into the evidence.
+  for (const lighting::Light& light : scene.lights) options.keepShadowIntervals |= light.shadowMap.has_value();
   return options;
 }
 
@@ -65,6 +67,16 @@ const reference::ReferenceImages& SceneReferences::reference(int index, int subT
     it = references_.emplace(key, timed(referenceMs_, [&] { return renderer_.render(f, options); })).first;
   }
   return it->second;
+}
+
+std::vector<imaging::Image> SceneReferences::shadowMapImages(int index) {
+  const lighting::Frame& f = frame(index);
+  const auto maps = renderer_.shadowMaps(f);
+  std::vector<imaging::Image> images;
+  for (const auto* list : {&f.shadows.maps, &f.shadows.cubes})
+    for (const lighting::ShadowProjection& projection : *list)
+      for (int v = 0; v < int(projection.views.size()); ++v) images.push_back(maps[projection.light]->viewImage(v));
+  return images;
 }
 
 const reference::ReferenceImages& SceneReferences::ideal(int index) {
@@ -113,12 +125,14 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
     frameCheck.comparison = timed(check.timings.compare, [&] {
       return comparison::compareImages(result, ref, scene.expect, options.worstCount);
     });
-    if (animated) {
+    // Animated scenes: the popping score; shadow maps: their error against
+    // ray-traced shadows (SPEC 3.9 --ideal), information beside the verdict.
+    if (animated || frame.shadows.any()) {
       const reference::ReferenceImages& ideal = references.ideal(f);
       timed(check.timings.compare, [&] {
         imaging::Image error = idealError(result, ideal, frameCheck.idealError);
-        if (!previousError.pixels.empty()) frameCheck.poppingJump = poppingJump(previousError, error);
-        previousError = std::move(error);
+        if (animated && !previousError.pixels.empty()) frameCheck.poppingJump = poppingJump(previousError, error);
+        if (animated) previousError = std::move(error);
       });
     }
 
@@ -126,6 +140,10 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
     const bool pass = frameCheck.comparison.verdict == comparison::Verdict::Pass;
     const double tightness = frameCheck.comparison.maxErrorOverTolerance;
     const bool keep = allPass && (!pass || tightness > worstTightness || check.frames.empty());
+    if (keep && !pass && frame.shadows.any()) {
+      check.evidenceShadowMaps.backend = backend.readShadowMaps();
+      check.evidenceShadowMaps.reference = references.shadowMapImages(f);
+    }
     if (keep) {
       check.evidenceFrame = f;
       check.evidenceResult = std::move(result);

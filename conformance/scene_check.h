@@ -5,6 +5,7 @@
 #pragma once
 
 #include "backends/backend.h"
+#include "comparison/comparison_report.h"
 #include "comparison/image_comparison.h"
 #include "lighting/frame.h"
 #include "reference/reference_renderer.h"
@@ -38,6 +39,9 @@ class SceneReferences {
   // `expect.against` says, so the baked part cancels and only budgets remain.
   const reference::ReferenceImages& ideal(int frame);
   double referenceMilliseconds() const { return referenceMs_; }  // time spent rendering references so far
+  // SPEC 3.9's evidence: the reference's maps of `frame`, one image per view
+  // in lighting::shadowPassViews order (ReferenceShadowMap::viewImage).
+  std::vector<imaging::Image> shadowMapImages(int frame);
 
  private:
   std::shared_ptr<const lighting::PreparedScene> prepared_;
@@ -61,7 +65,8 @@ struct StageTimings {
 struct FrameCheck {
   int frame = 0;
   comparison::Comparison comparison;
-  // Animated scenes only (otherwise NaN). idealError: max over compared
+  // Animated scenes and scenes with shadow maps (otherwise NaN; poppingJump
+  // animated scenes only). idealError: max over compared
   // pixels and RGB of |backend - ideal|. poppingJump: SPEC 6's
   // max over pixels |e_f - e_(f-1)| with e = backend - ideal, over pixels
   // compared in both frames; NaN on frame 0.
@@ -78,6 +83,9 @@ struct SceneCheck {
   int evidenceFrame = 0;
   imaging::Image evidenceResult;
   reference::ReferenceImages evidenceReference;
+  // SPEC 3.9, a failing frame with shadow maps only: the backend's maps read
+  // back and the reference's (comparison::ShadowMapEvidence).
+  comparison::ShadowMapEvidence evidenceShadowMaps;
   StageTimings timings;
   const FrameCheck& evidence() const;  // the FrameCheck of evidenceFrame
 };

@@ -9,90 +9,21 @@
 namespace lighting {
 namespace {
 
-// One face of the cube: the major axis and its sign, and the world axes (with
-// signs) that sc and tc read, as in Vulkan's "Cube Map Face Selection" table.
-struct FaceAxes {
-  int major;
-  double sign;
-  int sAxis;
-  double sSign;
-  int tAxis;
-  double tSign;
-};
-constexpr FaceAxes kFaces[6] = {
-    {0, +1, 2, -1, 1, -1},  // +X: sc = -z, tc = -y
-    {0, -1, 2, +1, 1, -1},  // -X: sc = +z, tc = -y
-    {1, +1, 0, +1, 2, +1},  // +Y: sc = +x, tc = +z
-    {1, -1, 0, +1, 2, -1},  // -Y: sc = +x, tc = -z
-    {2, +1, 0, +1, 1, -1},  // +Z: sc = +x, tc = -y
-    {2, -1, 0, -1, 1, -1},  // -Z: sc = -x, tc = -y
-};
-
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 
-// The point on face `face` of the cube [-1, 1]^3 at texel-centre coordinates
-// (s, t) in [-1, 1].
-Vec3 facePoint(int face, double s, double t) {
-  const FaceAxes& a = kFaces[face];
-  Vec3 d(0.0);
-  d[a.major] = a.sign;
-  d[a.sAxis] = a.sSign * s;
-  d[a.tAxis] = a.tSign * t;
-  return d;
-}
-
-// Texel (i, j) of an N x N face, with i or j possibly one texel outside it:
-// the texel of the adjacent face across the edge (Vulkan's cube map edge
-// handling). The texel inside the face next to the edge sits half a texel
-// from it; its neighbour across the edge sits half a texel from the edge on
-// the other face, at the same place along the edge.
 CookieTap acrossEdge(int face, int i, int j, int n) {
-  CookieTap tap{face, i, j, false, 0};
-  const bool outI = i < 0 || i >= n, outJ = j < 0 || j >= n;
-  if (!outI && !outJ) return tap;
-  if (outI && outJ) {
-    tap.corner = true;
-    tap.i = std::clamp(i, 0, n - 1);
-    tap.j = std::clamp(j, 0, n - 1);
-    return tap;
-  }
-  const int ci = std::clamp(i, 0, n - 1), cj = std::clamp(j, 0, n - 1);
-  const double s = 2.0 * (ci + 0.5) / n - 1.0, t = 2.0 * (cj + 0.5) / n - 1.0;
-  Vec3 d = facePoint(face, s, t);
-  const FaceAxes& a = kFaces[face];
-  const int edgeAxis = outI ? a.sAxis : a.tAxis;
-  d[a.major] = a.sign * (1.0 - 1.0 / n);
-  d[edgeAxis] = d[edgeAxis] > 0 ? 1.0 : -1.0;
-  const CookieCoordinates across = cubeCoordinates(d);
-  tap.face = across.face;
-  tap.i = std::clamp(int(std::floor(across.u * n)), 0, n - 1);
-  tap.j = std::clamp(int(std::floor(across.v * n)), 0, n - 1);
-  return tap;
+  const CubeTexel texel = cubeTexelAcrossEdge(face, i, j, n);
+  return {texel.face, texel.i, texel.j, texel.corner, 0};
 }
 
 }  // namespace
 
-LightBasis lightBasis(const Vec3& direction) {
-  LightBasis b;
-  b.f = glm::normalize(direction);
-  const Vec3 up = std::abs(b.f.y) > kBasisUpSwitch ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-  b.r = glm::normalize(glm::cross(b.f, up));
-  b.u = glm::cross(b.r, b.f);
-  return b;
-}
-
 CookieCoordinates cubeCoordinates(const Vec3& d) {
-  const Vec3 m = glm::abs(d);
-  int face;
-  if (m.x >= m.y && m.x >= m.z) face = d.x >= 0 ? 0 : 1;
-  else if (m.y >= m.z) face = d.y >= 0 ? 2 : 3;
-  else face = d.z >= 0 ? 4 : 5;
-  const FaceAxes& a = kFaces[face];
-  const double ma = m[a.major];
+  const CubeFacePoint at = cubeFacePoint(d);
   CookieCoordinates c;
-  c.face = face;
-  c.u = (a.sSign * d[a.sAxis] / ma + 1.0) / 2.0;
-  c.v = (a.tSign * d[a.tAxis] / ma + 1.0) / 2.0;
+  c.face = at.face;
+  c.u = at.u;
+  c.v = at.v;
   return c;
 }
 

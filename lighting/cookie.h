@@ -4,19 +4,12 @@
 // point). The reference calls these; the GPU copy is shaders/lighting.glsl.
 #pragma once
 
+#include "lighting/light_space.h"
 #include "lighting/scene.h"
 
 #include <array>
 
 namespace lighting {
-
-// SPEC 3.9: f = direction, r = normalize(cross(f, up)), u = cross(r, f), with
-// up = +Y, or +Z when |f.y| > 0.99.
-struct LightBasis {
-  Vec3 r, u, f;
-};
-LightBasis lightBasis(const Vec3& direction);
-constexpr double kBasisUpSwitch = 0.99;
 
 struct CookieCoordinates {
   bool outside = false;  // spot: q.z <= 0, where the cookie is 0
@@ -28,10 +21,8 @@ CookieCoordinates cookieCoordinates(const Light& light, const Vec3& p);
 // A spot cookie's uv = 0.5 + scale q.xy / q.z: scale = 0.5 / tan(spot_angle / 2).
 double spotCookieScale(const Light& spot);
 
-// The cube face a direction selects (its major axis; ties go to x, then y:
-// Vulkan recommends z, then y, and allows any fixed rule, so at a tie the
-// tolerance admits either face, reference/cookie_bound.cpp)
-// and its (u, v), by the table Vulkan and OpenGL share.
+// The cube face a direction selects and its (u, v) (light_space.h's
+// cubeFacePoint; at a tie the tolerance admits either face, reference/cookie_bound.cpp).
 CookieCoordinates cubeCoordinates(const Vec3& direction);
 
 // The four texels and weights of a bilinear sample (taps in the order

@@ -40,6 +40,7 @@ ShaderFeatures featuresOf(const Frame& frame) {
   f.lightmap = anyMask;
   for (const Object& o : scene.objects) f.specularBrdf |= o.brdf == Brdf::Srp;
   f.cookies = frame.cookies.any();
+  f.shadowMaps = frame.shadows.any();
   return f;
 }
 
@@ -122,6 +123,7 @@ Frame prepareFrame(std::shared_ptr<const PreparedScene> prepared, int index) {
     frame.objectLists = buildObjectLightLists(scene, frame.selection, bounds);
   }
   frame.cookies = assignCookieSlots(scene, frame.selection);
+  frame.shadows = assignShadowSlots(scene, frame.selection);
   frame.features = featuresOf(frame);
   return frame;
 }

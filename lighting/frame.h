@@ -11,6 +11,7 @@
 #include "lighting/object_light_lists.h"
 #include "lighting/scene.h"
 #include "lighting/shadow_mask_channels.h"
+#include "lighting/shadow_slots.h"
 #include "lighting/transform.h"
 #include "lighting/visible_lights.h"
 
@@ -58,6 +59,7 @@ struct ShaderFeatures {
   bool ambient = false;
   bool specularBrdf = false;   // some object has the srp BRDF (SPEC 3.8)
   bool cookies = false;        // some kept light has a cookie (SPEC 3.10)
+  bool shadowMaps = false;     // some kept light has a real-time shadow map (SPEC 3.9)
 };
 
 // The lights that shade one object, as scene light indices.
@@ -74,6 +76,7 @@ struct Frame {
   std::vector<ObjectLightList> objectLists;  // empty when per-object lists are not in use
   ShaderFeatures features;
   CookieSlots cookies;  // SPEC 3.10: the kept lights' cookies and their texture slots
+  ShadowSlots shadows;  // SPEC 3.9: the kept lights' shadow maps and their depth-texture slots
 
   const Scene& scene() const { return prepared->scene; }
   // False on the deferred path: it lights every kept light per pixel.

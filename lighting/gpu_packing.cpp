@@ -2,6 +2,7 @@
 
 #include "lighting/cookie_packing.h"
 #include "lighting/light_math.h"
+#include "lighting/shadow_packing.h"
 
 namespace lighting {
 namespace {
@@ -34,9 +35,13 @@ GpuLight packGpuLight(const Frame& frame, int lightIndex, double weight) {
   // w: the light's cookie slot (SPEC 3.10), -1 without one (shaders/cookies.glsl).
   g.spotDirection = vec4(-light.direction, double(cookieBlockSlot(frame, lightIndex)));
   const SpotFactors spot = lightSpotFactors(light, scene.pipeline.profile);
+  // z: the light's shadow, a mixed light's mask channel (SPEC 3.5) or a real-time
+  // light's shadow block slot after them (SPEC 3.9, shadow_packing.h); w: the
+  // mask's strength (a shadow slot carries its own).
   const int channel = frame.prepared->shadowMask.channelOfLight[lightIndex];
-  g.spotAngles = {float(spot.a), float(spot.b), float(channel),
-                  channel >= 0 ? float(light.shadowStrength) : 0.0f};
+  const int shadowSlot = shadowBlockSlot(frame, lightIndex);
+  const int shadow = channel >= 0 ? channel : shadowSlot >= 0 ? kShadowSlotBase + shadowSlot : -1;
+  g.spotAngles = {float(spot.a), float(spot.b), float(shadow), channel >= 0 ? float(light.shadowStrength) : 0.0f};
   return g;
 }
 

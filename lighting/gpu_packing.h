@@ -34,7 +34,7 @@ struct GpuLight {
   GpuVec4 position;       // xyz: camera-relative position (local) or L = -direction (directional); w: 1 local, 0 directional
   GpuVec4 color;          // rgb: finalColor = color * intensity; w: invRangeSq (0 for directional)
   GpuVec4 spotDirection;  // xyz: spotDir = -direction; w: the cookie's GpuCookieBlock slot, -1 without one
-  GpuVec4 spotAngles;     // x: a, y: b (point lights 0, 1); z: shadow-mask channel or -1; w: shadow strength
+  GpuVec4 spotAngles;     // x: a, y: b (point lights 0, 1); z: shadow-mask channel 0-3, shadow-map slot + 4, or -1; w: mask strength
 };
 static_assert(sizeof(GpuLight) == 64);
 

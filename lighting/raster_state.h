@@ -23,8 +23,14 @@ struct RasterState {
 };
 
 // SPEC 1: opaque surfaces, depth LESS with writes, back faces culled. The
-// forward pass and the deferred G-buffer pass draw the scene's objects with
-// it (and a depth-only shadow-map pass would too).
+// forward pass and the deferred G-buffer pass draw the scene's objects with it.
 inline constexpr RasterState kOpaqueSurfaceState{CullMode::Back, DepthCompare::Less, true, false};
+
+// SPEC 3.9: the shadow-map pass draws every triangle (both faces cast, no
+// culling), nearest depth wins (LESS with writes, cleared to 1), depth
+// clipped to [0, 1] (a caster beyond the map's far plane is not in it) and no
+// rasteriser depth bias (its slope term is implementation-defined), which
+// RasterState never enables.
+inline constexpr RasterState kShadowCasterState{CullMode::None, DepthCompare::Less, true, false};
 
 }  // namespace lighting

@@ -83,6 +83,19 @@ struct Cookie {
   std::vector<std::shared_ptr<const CookieImage>> images;  // 1, or 6 for a cube
   double sizeX = 1, sizeY = 1;     // directional: the world size of one tile
 };
+// SPEC 2 and 3.9: a real-time light's shadow map. Present on a `realtime`
+// light with `shadows` (the defaults below when the file leaves
+// `shadow_map` out); absent otherwise.
+enum class ShadowFilter { Hard, Bilinear, Tent3x3 };
+struct ShadowMapSpec {
+  int resolution = 512;  // a power of two in [16, 4096]
+  ShadowFilter filter = ShadowFilter::Bilinear;
+  double depthBias = 0.05;   // world units, along L
+  double normalBias = 0;     // world units, along N
+  double nearPlane = 0.05;   // spot and point: in (0, range)
+  Vec3 center{0, 0, 0};      // directional only
+  double extent = 10;        // directional only: the box's half-size
+};
 enum class LightMode { Realtime, Mixed, Baked };
 enum class BakeFalloff { InverseSquared, InverseSquaredNoRange, Legacy };
 
@@ -101,6 +114,7 @@ struct Light {
   double shadowStrength = 1;
   BakeFalloff bakeFalloff = BakeFalloff::InverseSquared;
   std::optional<Cookie> cookie;  // realtime lights only (SPEC 3.10)
+  std::optional<ShadowMapSpec> shadowMap;  // realtime lights with shadows only (SPEC 3.9)
 
   Vec3 finalColor() const { return color * intensity; }
 };
@@ -117,6 +131,9 @@ struct Pipeline {
   // Extension (docs/model.md, popping mitigation): the last this-many kept
   // point/spot lights fade out toward the cut; 0 is the plain cut of SPEC 5.1.
   int fadeLastLights = 0;
+  // SPEC 3.9: real-time shadows fade out over the last 20% of this view
+  // depth; 0 is no fading.
+  double shadowDistance = 0;
 };
 
 struct CameraKeyframe {

@@ -161,8 +161,8 @@ constexpr std::array<std::string_view, 7> kPerspectiveKeys{"position",  "target"
                                                            "fov_y_deg", "near",   "far"};
 constexpr std::array<std::string_view, 7> kOrthographicKeys{"position", "target", "up", "projection",
                                                             "height",   "near",   "far"};
-constexpr std::array<std::string_view, 5> kPipelineKeys{"profile", "path", "lights_per_object",
-                                                        "deferred_buffer", "fade_last_lights"};
+constexpr std::array<std::string_view, 6> kPipelineKeys{"profile",         "path",             "lights_per_object",
+                                                        "deferred_buffer", "fade_last_lights", "shadow_distance"};
 constexpr std::array<std::string_view, 6> kObjectKeys{"name",     "mesh",   "transform",
                                                       "material", "static", "lightmap_resolution"};
 constexpr std::array<std::string_view, 6> kMeshKeys{"type", "size", "subdivisions", "radius", "segments", "rings"};
@@ -172,9 +172,20 @@ constexpr std::array<std::string_view, 2> kBoxKeys{"type", "size"};
 constexpr std::array<std::string_view, 3> kTransformKeys{"translate", "rotate_deg", "scale"};
 constexpr std::array<std::string_view, 4> kMaterialKeys{"albedo", "brdf", "metallic", "smoothness"};
 constexpr std::array<std::string_view, 2> kAlbedoOnly{"albedo", "brdf"};
-constexpr std::array<std::string_view, 14> kLightKeys{
-    "name",  "type",      "position", "direction", "range",  "spot_angle_deg",  "inner_spot_angle_deg",
-    "color", "intensity", "mode",     "shadows",   "shadow_strength", "bake_falloff", "cookie"};
+constexpr std::array<std::string_view, 15> kLightKeys{
+    "name",      "type", "position", "direction",       "range",        "spot_angle_deg", "inner_spot_angle_deg", "color",
+    "intensity", "mode", "shadows",  "shadow_strength", "bake_falloff", "cookie",         "shadow_map"};
+// SPEC 2 and 3.9: a shadow map's keys, all of them, then those of each light type.
+constexpr std::array<std::string_view, 7> kShadowMapKeys{"resolution", "filter", "depth_bias", "normal_bias",
+                                                         "near",       "center", "extent"};
+constexpr std::array<std::string_view, 6> kDirectionalShadowMapKeys{"resolution",  "filter", "depth_bias",
+                                                                    "normal_bias", "center", "extent"};
+constexpr std::array<std::string_view, 5> kLocalShadowMapKeys{"resolution", "filter", "depth_bias", "normal_bias",
+                                                              "near"};
+constexpr int kMinShadowMapResolution = 16;
+constexpr int kMaxShadowMapResolution = 4096;
+// SPEC 2: a shadowed spot needs spot_angle_deg <= 170 (the projection's tangent).
+constexpr double kWidestShadowedSpotDeg = 170;
 constexpr std::array<std::string_view, 3> kCookieKeys{"image", "size", "cube"};
 constexpr std::array<std::string_view, 2> kDirectionalCookieKeys{"image", "size"};
 constexpr std::array<std::string_view, 1> kSpotCookieKeys{"image"};
@@ -193,6 +204,9 @@ constexpr std::array<Choice<MeshType>, 3> kMeshTypes{
     {{"plane", MeshType::Plane}, {"sphere", MeshType::Sphere}, {"box", MeshType::Box}}};
 constexpr std::array<Choice<LightType>, 3> kLightTypes{
     {{"directional", LightType::Directional}, {"point", LightType::Point}, {"spot", LightType::Spot}}};
+constexpr std::array<Choice<ShadowFilter>, 3> kShadowFilters{{{"hard", ShadowFilter::Hard},
+                                                              {"bilinear", ShadowFilter::Bilinear},
+                                                              {"tent3x3", ShadowFilter::Tent3x3}}};
 constexpr std::array<Choice<LightMode>, 3> kLightModes{
     {{"realtime", LightMode::Realtime}, {"mixed", LightMode::Mixed}, {"baked", LightMode::Baked}}};
 constexpr std::array<Choice<BakeFalloff>, 3> kBakeFalloffs{{{"inverse_squared", BakeFalloff::InverseSquared},
@@ -496,6 +510,7 @@ class SceneReader {
       }
       pipeline.fadeLastLights = count;
     }
+    if (auto distance = member(node, "shadow_distance")) pipeline.shadowDistance = readNumber(*distance, atLeast(0));
     return pipeline;
   }
 
@@ -627,7 +642,57 @@ class SceneReader {
     if (auto strength = member(node, "shadow_strength")) light.shadowStrength = readNumber(*strength, closed(0, 1));
     if (auto falloff = member(node, "bake_falloff")) light.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
     if (auto cookie = member(node, "cookie")) light.cookie = readCookie(*cookie, light);
+    readShadowMap(node, light);
     return light;
+  }
+
+  // SPEC 2 and 3.9: `shadows` on a realtime light is a shadow map, shaped by
+  // `shadow_map` (defaults without it). On a mixed or baked light `shadows`
+  // keeps its baked meaning and a `shadow_map` is an error; on a realtime
+  // light without `shadows` the map is checked but unused, so a scene can
+  // switch shadows off without deleting it.
+  void readShadowMap(const Node& lightNode, Light& light) const {
+    const auto node = member(lightNode, "shadow_map");
+    if (node && light.mode != LightMode::Realtime) {
+      fail(*node, "a shadow_map needs a realtime light (SPEC 2; a " +
+                      std::string(choiceName(kLightModes, light.mode)) +
+                      " light's shadows are baked into the shadow mask or lightmap)");
+    }
+    if (light.mode != LightMode::Realtime || (!light.shadows && !node)) return;
+    const Node& where = node ? *node : *member(lightNode, "shadows");
+    ShadowMapSpec map;
+    const bool directional = light.type == LightType::Directional;
+    if (node) {
+      expectObject(*node);
+      const std::string type(choiceName(kLightTypes, light.type));
+      const OtherVariants others{kShadowMapKeys, "a " + type + " light's shadow_map"};
+      if (directional) checkKeys(*node, kDirectionalShadowMapKeys, &others);
+      else checkKeys(*node, kLocalShadowMapKeys, &others);
+      if (auto resolution = member(*node, "resolution")) {
+        map.resolution = readInt(*resolution, kMinShadowMapResolution, kMaxShadowMapResolution);
+        if ((map.resolution & (map.resolution - 1)) != 0)
+          fail(*resolution, "expected a power of two in [16, 4096], got " + std::to_string(map.resolution));
+      }
+      if (auto filter = member(*node, "filter")) {
+        map.filter = readChoice(*filter, kShadowFilters);
+        if (map.filter == ShadowFilter::Tent3x3 && light.type == LightType::Point)
+          fail(*filter, "tent3x3 is not available on a point light's cube map (SPEC 2); use hard or bilinear");
+      }
+      if (auto bias = member(*node, "depth_bias")) map.depthBias = readNumber(*bias, atLeast(0));
+      if (auto bias = member(*node, "normal_bias")) map.normalBias = readNumber(*bias, atLeast(0));
+      if (auto nearNode = member(*node, "near")) map.nearPlane = readNumber(*nearNode, {0, true, light.range, true});
+      if (auto center = member(*node, "center")) map.center = readVec3(*center);
+      if (auto extent = member(*node, "extent")) map.extent = readNumber(*extent, above(0));
+    }
+    if (!directional && !(map.nearPlane < light.range)) {
+      fail(where, "the shadow map's near plane " + formatNumber(map.nearPlane) + " must lie in (0, range = " +
+                      formatNumber(light.range) + ") (SPEC 2)");
+    }
+    if (light.type == LightType::Spot && light.spotAngleDeg > kWidestShadowedSpotDeg) {
+      fail(where, "a shadowed spot needs spot_angle_deg <= 170 (SPEC 2), this spot has " +
+                      formatNumber(light.spotAngleDeg));
+    }
+    if (light.shadows) light.shadowMap = map;
   }
 
   LightType readLightType(const Node& node) const {

@@ -16,8 +16,11 @@ using namespace lighting;
 namespace tol = tolerance;
 
 LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::vector<double>& weights,
-                               const std::vector<int>& shadowMaskChannels, double filterWeightPrecision)
-    : filterWeightPrecision_(filterWeightPrecision) {
+                               const std::vector<int>& shadowMaskChannels, double filterWeightPrecision,
+                               const RealtimeShadows* shadows)
+    : filterWeightPrecision_(filterWeightPrecision),
+      idealVisibility_(shadows ? shadows->idealVisibility : nullptr),
+      shadowDistance_(shadows ? shadows->shadowDistance : 0) {
   lights_.reserve(scene.lights.size());
   for (std::size_t i = 0; i < scene.lights.size(); ++i) {
     const Light& l = scene.lights[i];
@@ -35,6 +38,11 @@ LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::v
       p.shadowStrength = l.shadowStrength;
     }
     if (l.cookie && l.mode == LightMode::Realtime) p.cookieLight = &l;
+    if (shadows && l.shadowMap && l.mode == LightMode::Realtime) {
+      p.realtimeShadowStrength = l.shadowStrength;
+      if (shadows->idealVisibility) p.idealShadowLight = &l;
+      else if (i < shadows->mapOfLight.size()) p.shadowMap = shadows->mapOfLight[i];
+    }
     lights_.push_back(p);
   }
 }
@@ -62,9 +70,74 @@ void addSpecular(const LobeAtPoint& lobe, const Vec3& N, const Vec3& L, const Ve
 
 }  // namespace
 
+// SPEC 3.9's shadowAtten at one point: its value and the interval the
+// admissible lookups [s_lo, s_hi] give, and how far the fade's float32 view
+// depth can move it.
+struct ShadowFactor {
+  double value = 1, lo = 1, hi = 1;
+  double fadeError = 0;
+  double sLo = 1, sHi = 1;
+};
+
+ShadowFactor LightEvaluator::shadowAt(const Prepared& light, const Vec3& p, const Vec3& N,
+                                                      double positionError, const ShadowReceiver& receiver) const {
+  ShadowFactor f;
+  double s = 1, sLo = 1, sHi = 1;
+  if (light.idealShadowLight) {
+    s = sLo = sHi = idealShadow(*idealVisibility_, *light.idealShadowLight, p, N);
+  } else {
+    const ShadowLookup look = light.shadowMap->lookup(p, N, {positionError}, filterWeightPrecision_);
+    s = look.s;
+    sLo = look.lo;
+    sHi = look.hi;
+  }
+  const double fade = shadowFade(shadowDistance_, receiver.viewDepth);
+  const double strength = light.realtimeShadowStrength;
+  f.value = shadowAttenuation(s, strength, fade);
+  // Nondecreasing in s (strength >= 0): the ends of the interval bound it.
+  f.lo = shadowAttenuation(sLo, strength, fade);
+  f.hi = shadowAttenuation(sHi, strength, fade);
+  f.sLo = sLo;
+  f.sHi = sHi;
+  // The fade's slope is 1 / (0.2 S) where it ramps; a view depth error that
+  // crosses either end of the ramp moves it by no more than that.
+  if (shadowDistance_ > 0) {
+    const double ramp = 0.2 * shadowDistance_;
+    const double z = receiver.viewDepth, dz = receiver.viewDepthError;
+    if (z + dz > 0.8 * shadowDistance_ && z - dz < shadowDistance_) f.fadeError = std::min(1.0, dz / ramp);
+  }
+  return f;
+}
+
+namespace {
+
+// The light's `term` (bound `termBound`) times its shadowAtten: the bound
+// widens by the term times the span the admissible lookups allow (SPEC 3.9).
+void applyShadow(const ShadowFactor& shadow, Vec3& term, Vec3& termBound, LightSum& sum) {
+  const bool adds = term.x > 0 || term.y > 0 || term.z > 0;
+  if (adds) {
+    if (!sum.shadowed || shadow.sHi - shadow.sLo > sum.widestShadowSpan) {
+      sum.widestShadowSpan = shadow.sHi - shadow.sLo;
+      sum.widestShadowLo = shadow.sLo;
+      sum.widestShadowHi = shadow.sHi;
+    }
+    sum.shadowed = true;
+  }
+  // A correct float32 evaluation may use any admissible shadowAtten, up to
+  // the interval's top: the unshadowed term's own error and the roundings
+  // scale with that, not with the reference's value.
+  const double highest = std::max(shadow.hi, shadow.value);
+  termBound = termBound * highest +
+              term * ((shadow.hi - shadow.lo) + shadow.fadeError +
+                      highest * (tol::kShadowAttenuationSteps * tol::kUnitRoundoff));
+  term *= shadow.value;
+}
+
+}  // namespace
+
 void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
                                 const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask,
-                                const LobeAtPoint* lobe) const {
+                                const LobeAtPoint* lobe, const ShadowReceiver* receiver) const {
   const double u = tol::kUnitRoundoff;
   const double pointMagnitude = glm::length(p - where.camera) + where.objectExtent;
   Vec3 absoluteSum(0.0);
@@ -93,6 +166,10 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
         const double positionError = tol::kPositionRoundingSteps * u * pointMagnitude + where.reconstructionError +
                                      tol::kCookieCoordinateSteps * u * distance;
         applyCookie(cookieWithBound(*light.cookieLight, p, positionError, filterWeightPrecision_), term, termBound);
+      }
+      if (receiver && (light.shadowMap || light.idealShadowLight)) {
+        const double positionError = tol::kPositionRoundingSteps * u * pointMagnitude + where.reconstructionError;
+        applyShadow(shadowAt(light, p, N, positionError, *receiver), term, termBound, sum);
       }
       sum.value += term;
       sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
@@ -143,6 +220,8 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
       const double positionError = rayError + tol::kCookieCoordinateSteps * u * distance;
       applyCookie(cookieWithBound(*light.cookieLight, p, positionError, filterWeightPrecision_), term, termBound);
     }
+    if (receiver && (light.shadowMap || light.idealShadowLight))
+      applyShadow(shadowAt(light, p, N, rayError, *receiver), term, termBound, sum);
     sum.value += term;
     sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
     absoluteSum += term;

@@ -6,6 +6,7 @@
 #include "lighting/baked_lighting.h"
 #include "lighting/light_math.h"
 #include "lighting/scene.h"
+#include "reference/shadow_maps.h"
 #include "reference/specular_bound.h"
 #include "reference/tolerance_model.h"
 
@@ -26,6 +27,28 @@ struct LightSum {
   // Per channel, how many terms were > 0: the deferred light buffers round
   // once or twice per light that adds something (deferred_buffers.h).
   lighting::Vec3 contributing{0.0};
+  // SPEC 3.9: some light with a real-time shadow added light here (its
+  // unshadowed term > 0), and the widest of those lights' intervals
+  // [s_lo, s_hi] (the ambiguity the scene's cap counts).
+  bool shadowed = false;
+  double widestShadowSpan = 0;
+  double widestShadowLo = 1, widestShadowHi = 1;  // that light's [s_lo, s_hi]
+};
+
+// SPEC 3.9's real-time shadows of a frame, for the evaluator: per scene
+// light its reference map (null without one), or with `idealVisibility` the
+// ray-traced visibility of `--ideal` instead of every map.
+struct RealtimeShadows {
+  std::vector<const ReferenceShadowMap*> mapOfLight;
+  const Bvh* idealVisibility = nullptr;
+  double shadowDistance = 0;  // pipeline.shadow_distance
+};
+
+// Where the shaded point sits for SPEC 3.9's fade: its view depth and how far
+// a float32 view depth may be from it.
+struct ShadowReceiver {
+  double viewDepth = 0;
+  double viewDepthError = 0;
 };
 
 // Where the point's float32 position comes from, for the position error.
@@ -54,6 +77,8 @@ struct LobeAtPoint {
   double smoothness = 0.5;
 };
 
+struct ShadowFactor;  // light_evaluation.cpp: one light's shadowAtten and its interval
+
 class LightEvaluator {
  public:
   // `weights`: a factor on each scene light's finalColor (the fade weights of
@@ -65,16 +90,19 @@ class LightEvaluator {
   // `filterWeightPrecision`: SPEC 7's filter weight precision, for cookies.
   LightEvaluator(const lighting::Scene& scene, lighting::Profile profile, const std::vector<double>& weights = {},
                  const std::vector<int>& shadowMaskChannels = {},
-                 double filterWeightPrecision = tolerance::kFilterWeightPrecision);
+                 double filterWeightPrecision = tolerance::kFilterWeightPrecision,
+                 const RealtimeShadows* shadows = nullptr);
 
   // Adds the contributions of `lights` (scene indices) at p with unit normal N.
   // `mask`: the object's shadow mask at p, or null where there is none (an
   // object without maps, and legacy vertex lights, which the GPU evaluates
   // with a mask of 1): SPEC 3.5's shadowMask is then 1.
   // `lobe`: an srp material's lobe (adds LightSum::specular), or null (Lambert).
+  // `receiver`: where p sits for SPEC 3.9's real-time shadows, or null where
+  // they do not apply (legacy vertex lights: the vertex stage reads no map).
   void accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
                   const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask = nullptr,
-                  const LobeAtPoint* lobe = nullptr) const;
+                  const LobeAtPoint* lobe = nullptr, const ShadowReceiver* receiver = nullptr) const;
 
  private:
   struct Prepared {
@@ -88,9 +116,18 @@ class LightEvaluator {
     int shadowMaskChannel = -1;  // SPEC 3.5: c, or -1 (no channel, or strength 0)
     double shadowStrength = 0;
     const lighting::Light* cookieLight = nullptr;  // SPEC 3.10: the light, when it has a cookie
+    // SPEC 3.9: the light's real-time shadow, its map or (--ideal) the light
+    // itself for ray-traced visibility; both null without one.
+    const ReferenceShadowMap* shadowMap = nullptr;
+    const lighting::Light* idealShadowLight = nullptr;
+    double realtimeShadowStrength = 0;
   };
+  ShadowFactor shadowAt(const Prepared& light, const Vec3& p, const Vec3& N, double positionError,
+                        const ShadowReceiver& receiver) const;
   std::vector<Prepared> lights_;
   double filterWeightPrecision_;
+  const Bvh* idealVisibility_ = nullptr;
+  double shadowDistance_ = 0;
 };
 
 }  // namespace reference

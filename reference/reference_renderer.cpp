@@ -39,6 +39,9 @@ struct Shaded {
   // this over the centre and its sub-pixel shifts.
   Vec3 interpolation{0.0};
   int evaluations = 0;
+  bool shadowed = false;        // LightSum::shadowed (SPEC 3.9)
+  double widestShadowSpan = 0;  // LightSum::widestShadowSpan, and its interval
+  double widestShadowLo = 1, widestShadowHi = 1;
 };
 
 // How far the float32 diffuse colour and F0 of an srp material may be from
@@ -63,6 +66,9 @@ struct FrameShading {
   const Frame& frame;
   const WorldTriangles& world;
   const Bvh& bvh;
+  // SPEC 3.9: the frame's reference shadow maps, or ray-traced visibility (--ideal).
+  std::vector<std::unique_ptr<ReferenceShadowMap>> shadowMaps;
+  RealtimeShadows realtimeShadows;
   LightEvaluator evaluator;
   std::vector<ObjectLights> lights;       // per object
   std::vector<PositionContext> contexts;  // per object
@@ -74,14 +80,17 @@ struct FrameShading {
   std::vector<Vec3> vertexBound;
   double filterWeightPrecision;  // ReferenceOptions::filterWeightPrecision
 
-  FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, const ReferenceOptions& options)
+  FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, const ReferenceOptions& options,
+               std::vector<std::unique_ptr<ReferenceShadowMap>> maps)
       : frame(f),
         world(w),
         bvh(b),
+        shadowMaps(std::move(maps)),
+        realtimeShadows(realtimeShadowsOf(f, b, shadowMaps, options)),
         // The fade weights are part of the budgets: `--ideal` has neither.
         evaluator(f.scene(), f.scene().pipeline.profile,
                   options.ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size()),
-                  f.prepared->shadowMask.channelOfLight, options.filterWeightPrecision),
+                  f.prepared->shadowMask.channelOfLight, options.filterWeightPrecision, &realtimeShadows),
         filterWeightPrecision(options.filterWeightPrecision) {
     const auto& objects = f.prepared->objects;
     for (int o = 0; o < int(objects.size()); ++o) {
@@ -107,6 +116,16 @@ struct FrameShading {
       vertexValue[v] = sum.value;
       vertexBound[v] = sum.errorBound;
     }
+  }
+
+  static RealtimeShadows realtimeShadowsOf(const Frame& f, const Bvh& b,
+                                           const std::vector<std::unique_ptr<ReferenceShadowMap>>& maps,
+                                           const ReferenceOptions& options) {
+    RealtimeShadows shadows;
+    shadows.shadowDistance = f.scene().pipeline.shadowDistance;
+    if (options.ideal) shadows.idealVisibility = &b;  // SPEC 3.9 `--ideal`: exact visibility
+    for (const auto& map : maps) shadows.mapOfLight.push_back(map.get());
+    return shadows;
   }
 
   // SPEC 3.8's V at p, with its float32 error: a camera-relative
@@ -193,9 +212,14 @@ struct FrameShading {
     const MaterialBrdf& brdf = materials[tri.object];
     std::optional<LobeAtPoint> lobe;
     if (brdf.lobe) lobe = lobeAt(p, where, scene.objects[tri.object].smoothness);
+    // SPEC 3.9's fade reads the view depth, off by the position error.
+    const ShadowReceiver receiver{frame.view.viewDepth(p),
+                                  tol::kPositionRoundingSteps * tol::kUnitRoundoff *
+                                          (glm::length(p - where.camera) + where.objectExtent) +
+                                      where.reconstructionError};
     LightSum sum;
     evaluator.accumulate(lights[tri.object].perPixel, p, N, where, sum,
-                         bake && !bake->shadowMask.empty() ? &mask : nullptr, lobe ? &*lobe : nullptr);
+                         bake && !bake->shadowMask.empty() ? &mask : nullptr, lobe ? &*lobe : nullptr, &receiver);
     if (!lights[tri.object].perVertex.empty()) {
       sum.value += b0 * vertexValue[tri.vertex[0]] + hit.b1 * vertexValue[tri.vertex[1]] +
                    hit.b2 * vertexValue[tri.vertex[2]];
@@ -216,6 +240,10 @@ struct FrameShading {
     if (deferred) applyDeferredBuffer(scene.pipeline.deferredBuffer, brdf, sum, shaded);
     shaded.interpolation = brdf.diffuse * interpolation;
     shaded.evaluations = sum.evaluations;
+    shaded.shadowed = sum.shadowed;
+    shaded.widestShadowSpan = sum.widestShadowSpan;
+    shaded.widestShadowLo = sum.widestShadowLo;
+    shaded.widestShadowHi = sum.widestShadowHi;
     return shaded;
   }
 
@@ -280,9 +308,28 @@ constexpr int kEdgeProbes = 8;
 ReferenceRenderer::ReferenceRenderer(std::shared_ptr<const PreparedScene> prepared)
     : prepared_(std::move(prepared)), world_(buildWorldTriangles(*prepared_)), bvh_(world_) {}
 
+bool ReferenceImages::shadowAmbiguityExceedsCap() const {
+  return double(ambiguousShadowPixels) > tol::kMostAmbiguousShadowFraction * double(shadowedPixels);
+}
+
+std::vector<std::unique_ptr<ReferenceShadowMap>> ReferenceRenderer::shadowMaps(const Frame& frame,
+                                                                               int threads) const {
+  const Scene& scene = frame.scene();
+  std::vector<std::unique_ptr<ReferenceShadowMap>> maps(scene.lights.size());
+  for (int l = 0; l < int(scene.lights.size()); ++l) {
+    if (!scene.lights[l].shadowMap) continue;
+    maps[l] = std::make_unique<ReferenceShadowMap>(shadowProjection(scene, l), bvh_, frame.view.camera.position,
+                                                   threads);
+  }
+  return maps;
+}
+
 ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOptions& options) const {
   const int width = frame.view.width, height = frame.view.height;
-  const FrameShading shading(frame, world_, bvh_, options);
+  // `--ideal` traces visibility instead of reading maps (SPEC 3.9).
+  const FrameShading shading(frame, world_, bvh_, options,
+                             options.ideal ? std::vector<std::unique_ptr<ReferenceShadowMap>>{}
+                                           : shadowMaps(frame, options.threads));
 
   // Pass 1: what each pixel centre sees; pass 2 needs the neighbours' answers
   // to find pixels near a change of surface.
@@ -304,10 +351,11 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
     out.toleranceArithmetic = imaging::Image(width, height, 3);
     out.toleranceShift = imaging::Image(width, height, 3);
   }
-  std::atomic<std::int64_t> evaluations{0}, masked{0};
+  if (options.keepShadowIntervals) out.shadowInterval = imaging::Image(width, height, 3);
+  std::atomic<std::int64_t> evaluations{0}, masked{0}, shadowed{0}, ambiguous{0};
 
   forEachRow(height, options.threads, [&](int j) {
-    std::int64_t rowEvaluations = 0, rowMasked = 0;
+    std::int64_t rowEvaluations = 0, rowMasked = 0, rowShadowed = 0, rowAmbiguous = 0;
     for (int i = 0; i < width; ++i) {
       const std::size_t k = std::size_t(j) * width + i;
       const double cx = i + 0.5, cy = j + 0.5;
@@ -334,6 +382,8 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
       }
 
       Vec3 value(0.0), bound(0.0), shiftChange(0.0), interpolation(0.0);
+      bool shadowedPixel = false;
+      double shadowSpan = 0, shadowLo = 1, shadowHi = 1;
       if (hits[k]) {
         const Ray ray = frame.view.rayThroughPixel(cx, cy);
         if (shading.depthIsAmbiguous(ray, *hits[k])) compared = false;
@@ -342,6 +392,10 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         value = centre.value;
         bound = centre.bound;
         interpolation = centre.interpolation;
+        shadowedPixel = centre.shadowed;
+        shadowSpan = centre.widestShadowSpan;
+        shadowLo = centre.widestShadowLo;
+        shadowHi = centre.widestShadowHi;
         // Sub-pixel shifts: the largest change of the shaded value.
         const double shifts[4][2] = {{tol::kSubpixelShiftPx, 0}, {-tol::kSubpixelShiftPx, 0},
                                      {0, tol::kSubpixelShiftPx}, {0, -tol::kSubpixelShiftPx}};
@@ -371,13 +425,26 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         out.tolerance.at(i, j, c) = float(tolerance[c]);
       }
       out.value.at(i, j, 3) = compared ? 1.0f : 0.0f;
+      if (options.keepShadowIntervals) {
+        out.shadowInterval.at(i, j, 0) = float(shadowLo);
+        out.shadowInterval.at(i, j, 1) = float(shadowHi);
+        out.shadowInterval.at(i, j, 2) = shadowedPixel ? 1.0f : 0.0f;
+      }
       rowMasked += compared ? 0 : 1;
+      if (compared && shadowedPixel) {
+        ++rowShadowed;
+        if (shadowSpan > tol::kAmbiguousShadowWidth) ++rowAmbiguous;
+      }
     }
     evaluations += rowEvaluations;
     masked += rowMasked;
+    shadowed += rowShadowed;
+    ambiguous += rowAmbiguous;
   });
   out.lightEvaluations = evaluations;
   out.maskedPixels = masked;
+  out.shadowedPixels = shadowed;
+  out.ambiguousShadowPixels = ambiguous;
   return out;
 }
 

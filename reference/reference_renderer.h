@@ -7,6 +7,7 @@
 #include "imaging/image.h"
 #include "lighting/frame.h"
 #include "reference/bvh.h"
+#include "reference/shadow_maps.h"
 #include "reference/tolerance_model.h"
 #include "reference/world_triangles.h"
 
@@ -36,6 +37,8 @@ struct ReferenceOptions {
   // device's sub-texel precision; 2^-4, the Vulkan minimum, when unknown):
   // the filtering term of the lightmaps, shadow masks and cookies.
   double filterWeightPrecision = tolerance::kFilterWeightPrecision;
+  // Also return ReferenceImages::shadowInterval (SPEC 3.9 evidence).
+  bool keepShadowIntervals = false;
 };
 
 struct ReferenceImages {
@@ -51,6 +54,19 @@ struct ReferenceImages {
   // filtering, buffer and storage bounds; they sum to `tolerance`.
   imaging::Image toleranceArithmetic;
   imaging::Image toleranceShift;
+  // SPEC 3.9's cap on ambiguity: the compared pixels that some light with a
+  // real-time shadow lights, and those among them whose interval [s_lo,
+  // s_hi] is wider than tolerance::kAmbiguousShadowWidth for some light.
+  std::int64_t shadowedPixels = 0;
+  std::int64_t ambiguousShadowPixels = 0;
+  // True when ambiguousShadowPixels exceeds tolerance::kMostAmbiguousShadowFraction
+  // of shadowedPixels: a defective scene (its comparison fails and says so).
+  bool shadowAmbiguityExceedsCap() const;
+  // keepShadowIntervals only (else empty): per pixel, the interval [s_lo,
+  // s_hi] of admissible shadow-map lookups of the light whose interval is
+  // widest there (channels 0, 1), and 1 where a light with a real-time
+  // shadow lights the pixel (channel 2); all 1, 1, 0 elsewhere.
+  imaging::Image shadowInterval;
 };
 
 // Built once per scene (world triangles and BVH), then renders any frame of it.
@@ -59,6 +75,9 @@ class ReferenceRenderer {
   explicit ReferenceRenderer(std::shared_ptr<const lighting::PreparedScene> prepared);
   ReferenceImages render(const lighting::Frame& frame, const ReferenceOptions& options = {}) const;
   std::size_t triangleCount() const { return world_.triangles.size(); }
+  // SPEC 3.9: the reference's shadow maps of `frame`, one per scene light
+  // with a shadow map (null for the others), as render() builds them.
+  std::vector<std::unique_ptr<ReferenceShadowMap>> shadowMaps(const lighting::Frame& frame, int threads = 0) const;
 
  private:
   std::shared_ptr<const lighting::PreparedScene> prepared_;

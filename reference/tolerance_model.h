@@ -208,6 +208,44 @@ constexpr double kSpecularTermSteps = 3;
 // the 0.5 + 0.5 x of the spot).
 constexpr double kCookieCoordinateSteps = 8;
 
+// --- Real-time shadow maps (SPEC 3.9; docs/tolerances.md "Shadow maps") ---
+
+// A map texel's stored depth: the shadow pass rasterises D32F depth with the
+// same interpolation error the camera's depth test allows (kDepthTieUlps, in
+// units of u: depth <= 1), from vertices whose float32 position is off by
+// kShadowPositionSteps u times the magnitudes (|vertex - camera| and |light
+// origin - camera|): the model transform (kPositionRoundingSteps) and the
+// light's clip transform (4 products and 3 sums per row, 8 after rounding up).
+constexpr double kShadowPositionSteps = 16;
+
+// Which surface a texel centre sees: the shadow pass snaps vertices to the
+// sub-pixel grid like the camera's (kSubpixelShiftPx of a texel), so the
+// reference also takes the depths a shift that far away sees; centres within
+// kEdgeDistancePx of a change of surface admit either surface's depth (or the
+// clear value 1).
+
+// The lookup's map coordinates and reference depth: clip = M p' (the same
+// transform error as above, as a position error of p'), then x / w, y / w,
+// z / w (2.5 ULP each) and 0.5 + 0.5 x: 4u absolute on coordinates and depth
+// of magnitude <= 1, on top of the position error.
+constexpr double kShadowCoordinateSteps = 4;
+
+// A bilinear or tent weight is exact to the device's sub-texel precision
+// (ReferenceOptions::filterWeightPrecision, SPEC 3.9's 2^-4 minimum); the
+// tent's own weights and fetch offsets (a few operations each on o in
+// [-0.5, 0.5]) add this many u, relative.
+constexpr double kShadowTentWeightSteps = 16;
+
+// shadowAtten = saturate(mix(1, s, strength) + fade) (3 operations) and its
+// product with the light's attenuation (1), relative to the light term.
+constexpr double kShadowAttenuationSteps = 4;
+
+// SPEC 3.9's cap on ambiguity: a scene in which more than this fraction of
+// the compared shadowed pixels have an interval [s_lo, s_hi] wider than
+// kAmbiguousShadowWidth is a defective scene.
+constexpr double kAmbiguousShadowWidth = 0.01;
+constexpr double kMostAmbiguousShadowFraction = 0.05;
+
 // --- The combination ---
 
 // The formula at the top of this file, per channel, for a pixel whose shaded

@@ -149,6 +149,7 @@ std::string benchOverviewHtml(const Json& bench) {
 
   const Entries gpu = m.select([](const BenchEntry& e) { return !isPrepare(e); });
   speedErrorSection(out, m, gpu, true);
+  shadowMapSection(out, m, gpu);
   lightmapSection(out, m, gpu, true);
   costCurveSection(out, m, gpu, true);
   prepareSection(out, m);
@@ -178,6 +179,7 @@ std::string benchBackendHtml(const Json& bench, const std::string& backend) {
 
   const Entries mine = m.select([&](const BenchEntry& e) { return !isPrepare(e) && backendOf(e) == backend; });
   speedErrorSection(out, m, mine, false);
+  shadowMapSection(out, m, mine);
   lightmapSection(out, m, mine, false);
   costCurveSection(out, m, mine, false);
   out << "<h2 id=\"table\">Every benchmark</h2>\n<p class=\"note\">Times in ms: the median over the repetitions "

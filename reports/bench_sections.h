@@ -13,6 +13,10 @@ namespace reports::benchpages {
 // bench_speed_error.cpp: the speed-against-error scatter per scene with its
 // Pareto front, and its table.
 void speedErrorSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend);
+// bench_speed_error.cpp too: SPEC 3.9's shadow-map modes (`shadows-<filter>-<N>`)
+// alone, per backend, with their Pareto front of resolution and filter and
+// the shadow passes' own time; nothing when none ran.
+void shadowMapSection(std::ostream& out, const BenchModel& m, const Entries& candidates);
 // bench_lightmap_section.cpp: the lightmap-N modes against N; nothing when none ran.
 void lightmapSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend);
 // bench_curve_sections.cpp: frame time against each curve's load, and the

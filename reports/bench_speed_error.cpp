@@ -59,7 +59,8 @@ svg::Series frontLine(const std::vector<TimeError>& te, const std::vector<bool>&
 }
 
 // The columns of the Pareto table; `onFront` says which rows are on it.
-Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& onFront, bool withBake) {
+Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& onFront, bool withBake,
+                                     bool withShadowPasses) {
   Table<const BenchEntry*> table;
   table.cssClass = "bench pareto";
   const auto front = [&onFront](const BenchEntry& e) { return onFront.at(&e); };
@@ -85,6 +86,8 @@ Table<const BenchEntry*> paretoTable(const std::map<const BenchEntry*, bool>& on
   };
   // The lightmap modes carry their bake time: the price paid before the frame.
   if (withBake) table.columns.push_back(counterColumn("bake ms", "bake_ms"));
+  // The shadow-map modes carry their shadow passes' share of the frame.
+  if (withShadowPasses) table.columns.push_back(counterColumn("shadow pass ms", "shadow_pass_ms"));
   table.columns.push_back(numberColumn("\u00d7 limit", limitRatio, 3));
   return table;
 }
@@ -122,6 +125,9 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
   const auto bakes = [](const BenchEntry* e) { return counter(*e, "bake_ms").has_value(); };
   const bool withBake =
       std::any_of(points.begin(), points.end(), bakes) || std::any_of(broken.begin(), broken.end(), bakes);
+  const auto shadowPasses = [](const BenchEntry* e) { return counter(*e, "shadow_pass_ms").has_value(); };
+  const bool withShadowPasses = std::any_of(points.begin(), points.end(), shadowPasses) ||
+                                std::any_of(broken.begin(), broken.end(), shadowPasses);
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return te[a] < te[b]; });
@@ -131,8 +137,10 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
   std::stable_sort(brokenRows.begin(), brokenRows.end(),
                    [](const BenchEntry* a, const BenchEntry* b) { return *a->medianMs < *b->medianMs; });
   rows.insert(rows.end(), brokenRows.begin(), brokenRows.end());
-  writeTable(out, paretoTable(onFront, withBake), rows);
+  writeTable(out, paretoTable(onFront, withBake, withShadowPasses), rows);
 }
+
+bool isShadowMapMode(const BenchEntry& e) { return e.name.kind == "frame" && e.name.mode.rfind("shadows-", 0) == 0; }
 
 }  // namespace
 
@@ -154,6 +162,27 @@ void speedErrorSection(std::ostream& out, const BenchModel& m, const Entries& ca
   all.insert(all.end(), broken.begin(), broken.end());
   for (const std::string& scene : scenesOf(all))
     scatterSection(out, m, scene, ofScene(withError, scene), ofScene(broken, scene), byBackend);
+}
+
+void shadowMapSection(std::ostream& out, const BenchModel& m, const Entries& candidates) {
+  const Entries shadowModes = filter(candidates, isShadowMapMode);
+  if (shadowModes.empty()) return;
+  out << "<h2 id=\"shadow-maps\">Shadow maps: resolution and filter</h2>\n<p class=\"note\">SPEC 3.9's "
+         "shadow maps at 256 to 4096 texels with each filter (<code>shadows-&lt;filter&gt;-&lt;N&gt;</code>: a "
+         "directional light, two spots and a point light casting onto the field's boxes), per backend: median frame "
+         "time against the RMS error of the image against <code>--ideal</code>, whose shadows are ray-traced, so "
+         "the error is what a map's resolution and filter cost against exact shadows. The front is what is worth "
+         "choosing; <code>shadow pass ms</code> is the shadow passes' share of the frame, timed apart. "
+         "<code>shadow-lights</code>, the same lights casting nothing, is on the scatter above.</p>\n";
+  std::vector<std::string> backends;
+  for (const BenchEntry* e : shadowModes)
+    if (std::find(backends.begin(), backends.end(), backendOf(*e)) == backends.end()) backends.push_back(backendOf(*e));
+  for (const std::string& backend : backends) {
+    const Entries mine = filter(shadowModes, [&](const BenchEntry& e) { return backendOf(e) == backend; });
+    const Entries withError = filter(mine, hasError);
+    const Entries broken = filter(mine, [](const BenchEntry& e) { return e.medianMs && isBroken(e); });
+    scatterSection(out, m, scenesOf(mine).front() + " shadow maps on " + backend, withError, broken, false);
+  }
 }
 
 }  // namespace benchpages

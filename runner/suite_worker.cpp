@@ -205,7 +205,7 @@ class Worker {
     const std::string dir =
         isMutant ? mutantEvidenceDir(task.mutant, plan_.combination.suffix) : testEvidenceDir(task.test);
     comparison::writeEvidence((fs::path(plan_.outDir) / dir).string(), check.evidence().comparison,
-                              check.evidenceResult, check.evidenceReference, task.test);
+                              check.evidenceResult, check.evidenceReference, task.test, &check.evidenceShadowMaps);
     result["evidence"] = evidenceJson(dir, check.evidenceFrame);
   }
 

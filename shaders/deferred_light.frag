@@ -32,7 +32,7 @@ void main() {
   // The forward pass's BRDF for this one light (SPEC 3.8).
   SurfaceBrdf surface = surfaceBrdf(albedo.rgb, material, N, viewDirection(p));
   vec3 L;
-  vec3 radiance = packedLight(deferredLight.light, p, N, mask, cookieValuesAt(p), L);
+  vec3 radiance = packedLight(deferredLight.light, p, N, mask, lightTexturesAt(p, N), L);
   LightSums sums = LightSums(vec3(0.0), vec3(0.0));
   addLight(sums, surface, radiance, L);
   vec3 c = brdfColour(surface, sums);

@@ -20,6 +20,9 @@ std::span<const std::uint32_t> deferredLightVertexSpirv();
 std::span<const std::uint32_t> deferredLightFragmentSpirv();
 std::span<const std::uint32_t> deferredCompositeVertexSpirv();
 std::span<const std::uint32_t> deferredCompositeFragmentSpirv();
+// The depth-only shadow-map pass (SPEC 3.9): one draw per object per view.
+std::span<const std::uint32_t> shadowCasterVertexSpirv();
+std::span<const std::uint32_t> shadowCasterFragmentSpirv();
 
 // GLSL 330 core; each specialization constant n is a macro
 // SPIRV_CROSS_CONSTANT_ID_n with the shader's default unless defined first.
@@ -30,5 +33,7 @@ std::string_view deferredLightVertexGlsl330();
 std::string_view deferredLightFragmentGlsl330();
 std::string_view deferredCompositeVertexGlsl330();
 std::string_view deferredCompositeFragmentGlsl330();
+std::string_view shadowCasterVertexGlsl330();
+std::string_view shadowCasterFragmentGlsl330();
 
 }  // namespace shaders

@@ -30,5 +30,8 @@ layout(constant_id = 10) const bool SPECULAR_BRDF = true;
 // Light cookies (SPEC 3.10): some kept light has one, so lights carry a
 // cookie slot and the cookie textures are sampled (cookies.glsl).
 layout(constant_id = 11) const bool COOKIES = true;
+// Real-time shadow maps (SPEC 3.9): some kept light has one, so lights carry
+// a shadow slot and the depth textures are looked up (shadows.glsl).
+layout(constant_id = 12) const bool SHADOW_MAPS = true;
 
 #endif

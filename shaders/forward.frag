@@ -22,13 +22,13 @@ void main() {
   vec4 mask = objectShadowMask(vLightmapUv);
   SurfaceBrdf surface = surfaceBrdf(objectData.albedo.rgb, objectData.material, N, viewDirection(p));
   LightSums sums = unlitSums(vLightmapUv);
-  CookieValues cookies = cookieValuesAt(p);  // SPEC 3.10, once for every light
+  LightTextures textures = lightTexturesAt(p, N);  // SPEC 3.10 and 3.9, once for every light
   vec3 L;
   // srp keeps directional lights apart and applies them to every object; the
   // legacy profile packs them with the others.
   if (DIRECTIONAL_LIGHTS && !legacyProfile())
     for (int i = 0; i < frameData.lightCounts.x; ++i) {
-      vec3 radiance = directionalLight(frameData.directionalLights[i], N, mask, cookies, L);
+      vec3 radiance = directionalLight(frameData.directionalLights[i], N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   if (objectListInUse()) {
@@ -38,12 +38,12 @@ void main() {
     // Mutant: srp's loop runs to count (objectLightIndex wraps past 8).
     if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectData.lightList.x;
     for (int k = 0; k < count; ++k) {
-      vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask, cookies, L);
+      vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   } else {
     for (int i = 0; i < frameData.lightCounts.y; ++i) {
-      vec3 radiance = packedLight(frameData.otherLights[i], p, N, mask, cookies, L);
+      vec3 radiance = packedLight(frameData.otherLights[i], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   }

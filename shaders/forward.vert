@@ -37,10 +37,10 @@ void main() {
     // Mutant: rotation * scale * normal, never normalised.
     vec3 vertexNormal = MUTANT == MUTANT_VERTEX_NORMAL_NOT_NORMALISED ? mat3(objectData.model) * inNormal : N;
     vec3 L;  // unused: vertex lights are Lambert (the legacy profile has no srp BRDF)
-    CookieValues cookies = cookieValuesAt(worldPosition);  // SPEC 3.10 at the vertex
+    LightTextures textures = lightTexturesAtVertex(worldPosition);  // SPEC 3.10 at the vertex; no shadow map
     for (int k = kLegacyPixelLights; k < count; ++k)
       vVertexLighting +=
-          packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), cookies, L);
+          packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), textures, L);
   }
   gl_Position = frameData.viewProjection * position;
 }

@@ -11,7 +11,7 @@ struct Light {
   vec4 position;       // xyz: camera-relative position, or L = -direction; w: 1 local, 0 directional
   vec4 color;          // rgb: finalColor; w: invRangeSq
   vec4 spotDirection;  // xyz: spotDir = -direction; w: cookie slot in CookieBlock, or -1
-  vec4 spotAngles;     // x: a, y: b (point: 0, 1); z: shadow-mask channel or -1; w: strength
+  vec4 spotAngles;     // x: a, y: b (point: 0, 1); z: shadow-mask channel 0-3, shadow-map slot + 4 (shadows.glsl), or -1; w: mask strength
 };
 
 layout(std140, set = 0, binding = 0) uniform FrameBlock {

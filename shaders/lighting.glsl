@@ -9,6 +9,22 @@
 #include "mutants.glsl"
 #include "light_data.glsl"
 #include "cookies.glsl"
+#include "shadows.glsl"
+
+// The value of every per-light texture at the point being lit: the cookies
+// (SPEC 3.10) and the real-time shadow maps (SPEC 3.9), each looked up once
+// per invocation for all lights (cookies.glsl explains why).
+struct LightTextures {
+  CookieValues cookies;
+  ShadowValues shadows;
+};
+LightTextures lightTexturesAt(vec3 p, vec3 N) { return LightTextures(cookieValuesAt(p), shadowValuesAt(p, N)); }
+// Legacy vertex lights: cookies, but no shadow map (the vertex stage reads none).
+LightTextures lightTexturesAtVertex(vec3 p) { return LightTextures(cookieValuesAt(p), unshadowed()); }
+// What `light`'s cookie and shadow map multiply its attenuation by.
+float lightTextureAttenuation(Light light, LightTextures textures) {
+  return cookieAttenuation(light, textures.cookies) * shadowMapAttenuation(light, textures.shadows);
+}
 
 // SPEC 1.
 float saturate(float x) { return clamp(x, 0.0, 1.0); }
@@ -60,20 +76,21 @@ float spotAttenuation(vec3 spotDirection, vec3 L, vec2 factors) {
 float shadowMaskAttenuation(Light light, vec4 mask) {
   if (!SHADOW_MASK || mask == vec4(1.0)) return 1.0;
   int channel = int(light.spotAngles.z);
-  if (channel < 0) return 1.0;
+  if (channel < 0 || channel >= kShadowSlotBase) return 1.0;  // none, or a real-time shadow slot
   if (MUTANT == MUTANT_SHADOW_MASK_CHANNEL_OFF_BY_ONE) channel = (channel + 1) % 4;
   float strength = MUTANT == MUTANT_SHADOW_STRENGTH_IGNORED ? 1.0 : light.spotAngles.w;
   return mix(1.0, mask[channel], strength);
 }
 
 // SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask, times the cookie
-// (SPEC 3.10; `cookies`: every slot's value at this point, cookies.glsl):
-// the radiance the BRDF weighs (addLight); L is returned for the specular lobe.
-vec3 directionalLight(Light light, vec3 N, vec4 mask, CookieValues cookies, out vec3 L) {
+// (SPEC 3.10) and the real-time shadow (SPEC 3.9) (`textures`: every slot's
+// value at this point): the radiance the BRDF weighs (addLight); L is
+// returned for the specular lobe.
+vec3 directionalLight(Light light, vec3 N, vec4 mask, LightTextures textures, out vec3 L) {
   L = light.position.xyz;
   float cosine = dot(N, L);
   if (MUTANT != MUTANT_DIRECTIONAL_NOT_SATURATED) cosine = saturate(cosine);
-  float attenuation = shadowMaskAttenuation(light, mask) * cookieAttenuation(light, cookies);
+  float attenuation = shadowMaskAttenuation(light, mask) * lightTextureAttenuation(light, textures);
   return light.color.rgb * (cosine * attenuation);
 }
 
@@ -107,14 +124,14 @@ float mutantAttenuationPrecision(float attenuation) {
 
 // SPEC 3.2: point and spot lights at camera-relative position p (the
 // absolute-coordinates mutant passes absolute ones).
-vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, CookieValues cookies, out vec3 L) {
+vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, LightTextures textures, out vec3 L) {
   vec3 ray = mutantWorldPosition(light.position.xyz) - p;
   float distSqr = clampedDistanceSquared(ray);
   L = ray * inversesqrt(distSqr);
   float attenuation = rangeAttenuation(distSqr, light.color.w) / distSqr;
   if (SPOT_LIGHTS) attenuation *= spotAttenuation(light.spotDirection.xyz, L, light.spotAngles.xy);
   attenuation *= shadowMaskAttenuation(light, mask);
-  attenuation *= cookieAttenuation(light, cookies);  // SPEC 3.10
+  attenuation *= lightTextureAttenuation(light, textures);  // SPEC 3.10, 3.9
   attenuation = mutantAttenuationPrecision(attenuation);
   float cosine = dot(N, L);
   if (MUTANT != MUTANT_LOCAL_NOT_SATURATED) cosine = saturate(cosine);
@@ -123,11 +140,11 @@ vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, CookieValues cookies, ou
 
 // A light of the packed `otherLights` array. In the legacy profile it holds
 // directional lights too (w = 0); in srp only point and spot lights.
-vec3 packedLight(Light light, vec3 p, vec3 N, vec4 mask, CookieValues cookies, out vec3 L) {
+vec3 packedLight(Light light, vec3 p, vec3 N, vec4 mask, LightTextures textures, out vec3 L) {
   L = vec3(0.0);
-  if (DIRECTIONAL_LIGHTS && light.position.w == 0.0) return directionalLight(light, N, mask, cookies, L);
+  if (DIRECTIONAL_LIGHTS && light.position.w == 0.0) return directionalLight(light, N, mask, textures, L);
   if (!POINT_LIGHTS && !SPOT_LIGHTS) return vec3(0.0);
-  return localLight(light, p, N, mask, cookies, L);
+  return localLight(light, p, N, mask, textures, L);
 }
 
 // --- SPEC 3.8: the custom pipeline's BRDF -------------------------------

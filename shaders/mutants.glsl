@@ -35,5 +35,12 @@ const int MUTANT_HALF_VECTOR_NOT_NORMALISED = 23; // H = L + V, not normalised
 const int MUTANT_DIRECTIONAL_COOKIE_CLAMPED = 24; // directional cookie clamped to edge, not tiled (SPEC 3.10)
 const int MUTANT_CUBE_COOKIE_ROTATED = 25;        // point cookie sampled at the direction turned 90 degrees about y
 const int MUTANT_COOKIE_V_FLIPPED = 26;           // 2D cookies sampled at 1 - v: image row 0 taken as v = 1
+// 27 (shadow-compare-less) changes the compare samplers the backends create, not the shader.
+const int MUTANT_SHADOW_DEPTH_BIAS_IGNORED = 28;  // p' without depth_bias * L (SPEC 3.9)
+const int MUTANT_SHADOW_NORMAL_BIAS_ALONG_L = 29; // the normal bias along L instead of N
+const int MUTANT_SHADOW_TEXEL_CENTRES_SHIFTED = 30;  // 2D lookups half a texel off the texel centres
+const int MUTANT_SHADOW_FADE_IGNORED = 31;        // fade = 0 whatever shadow_distance
+const int MUTANT_CUBE_SHADOW_WRONG_AXIS = 32;     // the cube face chosen with x and z exchanged
+const int MUTANT_SHADOW_STRENGTH_AS_POWER = 33;   // shadowAtten = saturate(pow(s, strength) + fade)
 
 #endif

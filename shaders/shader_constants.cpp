@@ -21,6 +21,7 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kSpecularBrdf] = all || f.specularBrdf;
   // The full shader asks each light's cookie slot (cookies.glsl).
   v[kCookies] = all || f.cookies;
+  v[kShadowMaps] = all || f.shadowMaps;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   return v;
 }

@@ -23,7 +23,8 @@ enum ConstantId : std::uint32_t {
   kLdr8Buffer = 9,  // deferred only: the light buffer is ldr8 (SPEC 3.7)
   kSpecularBrdf = 10,  // some material has the srp BRDF (SPEC 3.8)
   kCookies = 11,       // some kept light has a cookie (SPEC 3.10)
-  kConstantCount = 12,
+  kShadowMaps = 12,    // some kept light has a real-time shadow map (SPEC 3.9)
+  kConstantCount = 13,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

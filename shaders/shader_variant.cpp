@@ -53,6 +53,20 @@ const std::vector<MutantName>& mutantNames() {
        "the point cookie's cube is sampled at the direction turned 90 degrees about y (SPEC 3.10)"},
       {Mutant::CookieVFlipped, "cookie-v-flipped",
        "2D cookies are sampled at 1 - v: image row 0 taken as v = 1 (SPEC 3.10)"},
+      {Mutant::ShadowCompareLess, "shadow-compare-less",
+       "the shadow-map compare is LESS instead of LESS_OR_EQUAL: equal depths shadow (SPEC 3.9)"},
+      {Mutant::ShadowDepthBiasIgnored, "shadow-depth-bias-ignored",
+       "the shadow lookup's receiver leaves out depth_bias * L (SPEC 3.9)"},
+      {Mutant::ShadowNormalBiasAlongL, "shadow-normal-bias-along-l",
+       "the normal bias moves the receiver along L instead of N (SPEC 3.9)"},
+      {Mutant::ShadowTexelCentresShifted, "shadow-texel-centres-shifted",
+       "2D shadow-map lookups half a texel off the texel centres (SPEC 3.9)"},
+      {Mutant::ShadowFadeIgnored, "shadow-fade-ignored",
+       "shadows never fade toward shadow_distance (SPEC 3.9)"},
+      {Mutant::CubeShadowWrongAxis, "cube-shadow-wrong-axis",
+       "the point light's cube face is chosen with x and z exchanged (SPEC 3.9)"},
+      {Mutant::ShadowStrengthAsPower, "shadow-strength-as-power",
+       "shadowAtten = saturate(pow(s, strength) + fade) instead of lerp(1, s, strength) (SPEC 3.9)"},
   };
   return names;
 }

@@ -51,6 +51,15 @@ enum class Mutant : int {
   DirectionalCookieClamped = 24,   // the directional cookie clamped to edge instead of tiled
   CubeCookieRotated = 25,          // the point cookie's cube sampled turned 90 degrees about y
   CookieVFlipped = 26,             // 2D cookies sampled at 1 - v (image row 0 taken as v = 1)
+  // Real-time shadow maps (SPEC 3.9). 27 changes the compare samplers the
+  // backends create (no GLSL change); the others are shader mutants.
+  ShadowCompareLess = 27,          // the shadow compare is LESS instead of LESS_OR_EQUAL
+  ShadowDepthBiasIgnored = 28,     // p' without depth_bias * L
+  ShadowNormalBiasAlongL = 29,     // p' = p + normal_bias * L + depth_bias * L
+  ShadowTexelCentresShifted = 30,  // every 2D lookup half a texel off the texel centres
+  ShadowFadeIgnored = 31,          // fade = 0 whatever shadow_distance
+  CubeShadowWrongAxis = 32,        // the cube face chosen with x and z exchanged
+  ShadowStrengthAsPower = 33,      // shadowAtten = saturate(pow(s, strength) + fade)
 };
 
 struct MutantName {

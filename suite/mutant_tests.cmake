@@ -34,7 +34,14 @@ set(mutant_killers
   "half-vector-not-normalised=brdf/smoothness-0p9.json"
   "directional-cookie-clamped=cookies/directional-tiled-many-repeats.json"
   "cube-cookie-rotated-90=cookies/point-cube-seams-corner.json"
-  "cookie-v-flipped=cookies/directional-tiled-many-repeats.json,cookies/alpha-channel.json,cookies/spot-cone-crosses-light-plane.json")
+  "cookie-v-flipped=cookies/directional-tiled-many-repeats.json,cookies/alpha-channel.json,cookies/spot-cone-crosses-light-plane.json"
+  "shadow-compare-less=shadows/far-face-equal-depth.json"
+  "shadow-depth-bias-ignored=shadows/acne-sufficient-bias.json"
+  "shadow-normal-bias-along-l=shadows/normal-bias-sloped-receiver.json"
+  "shadow-texel-centres-shifted=shadows/hard-texel-steps-close-up.json"
+  "shadow-fade-ignored=shadows/fade-across-shadow-distance.json"
+  "cube-shadow-wrong-axis=shadows/point-cube-faces.json"
+  "shadow-strength-as-power=shadows/strengths-0-half-1.json")
 foreach(entry ${mutant_killers})
   string(REPLACE "=" ";" mutant_parts ${entry})
   list(GET mutant_parts 0 mutant)

@@ -3,6 +3,7 @@
 #include "backends/gl/cookie_textures.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/program_builder.h"
+#include "backends/gl/shadow_maps.h"
 #include "shaders/embedded_spirv.h"
 
 namespace backends::gl {
@@ -48,6 +49,7 @@ GlName DeferredPrograms::buildLight(const shaders::ConstantValues& constants) co
   for (int t = 0; t < kGbufferColourCount; ++t)
     bindSampler(gl_, program.get(), kGbufferSamplers[t], kFirstGbufferTextureUnit + t);
   bindCookieInterface(gl_, program.get());
+  bindShadowInterface(gl_, program.get());  // SPEC 3.9: the light pass reads the maps
   return program;
 }
 

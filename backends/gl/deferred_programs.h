@@ -4,7 +4,9 @@
 //   G-buffer:  forward.vert + gbuffer.frag; blocks and baked-map samplers
 //              exactly as the forward program binds them;
 //   light:     deferred_light.vert + .frag; FrameBlock (binding 0, for the
-//              view-projection), DeferredLightBlock (2), DeferredFrameBlock (3);
+//              view-projection), DeferredLightBlock (2), DeferredFrameBlock (3),
+//              the cookies' and shadow maps' blocks and samplers
+//              (cookie_textures.h, shadow_maps.h);
 //   composite: deferred_composite.vert + .frag; DeferredFrameBlock (3).
 // The G-buffer textures and the light buffer have texture units of their
 // own, after the baked maps' units 0 and 1, so no pass rebinds another's.

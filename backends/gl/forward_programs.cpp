@@ -2,6 +2,7 @@
 
 #include "backends/gl/cookie_textures.h"
 #include "backends/gl/program_builder.h"
+#include "backends/gl/shadow_maps.h"
 #include "shaders/embedded_spirv.h"
 
 namespace backends::gl {
@@ -20,6 +21,7 @@ void bindSceneObjectInterface(const GlFunctions& gl, GLuint program) {
   bindSampler(gl, program, "lightmapTexture", kLightmapTextureUnit);
   bindSampler(gl, program, "shadowMaskTexture", kShadowMaskTextureUnit);
   bindCookieInterface(gl, program);
+  bindShadowInterface(gl, program);
 }
 
 GlName ForwardPrograms::build(const shaders::ConstantValues& constants) const {

@@ -2,7 +2,8 @@
 // 330 of the Vulkan SPIR-V). One program per set of constants, linked on
 // first use; the uniform blocks are bound by name to the bindings the Vulkan
 // layout uses (0 frame, 1 object), and the baked maps' samplers to texture
-// units 0 (lightmap) and 1 (mask).
+// units 0 (lightmap) and 1 (mask); the cookies' and shadow maps' blocks and
+// samplers as cookie_textures.h and shadow_maps.h give them.
 #pragma once
 
 #include "backends/gl/gl_objects.h"

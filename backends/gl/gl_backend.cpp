@@ -11,6 +11,7 @@
 #include "backends/gl/probe_in_child.h"
 #include "backends/gl/raster_state_gl.h"
 #include "backends/gl/scene_draws.h"
+#include "backends/gl/shadow_maps.h"
 
 #include <chrono>
 #include <cstring>
@@ -32,7 +33,8 @@ std::string glString(const GlFunctions& gl, GLenum name) {
 // The renderer: an FBO with an RGBA32F colour and a 32-bit float depth
 // renderbuffer that every frame ends in, the scene's objects as draws
 // (scene_draws.h) with their baked maps (baked_textures.h), drawn forward
-// into that FBO, or deferred (deferred_renderer.h) with a composite into it.
+// into that FBO, or deferred (deferred_renderer.h) with a composite into it,
+// after the frame's shadow-map passes (shadow_maps.h) on either path.
 class GlBackend final : public Backend {
  public:
   GlBackend(const ContextFactory& makeContext, const BackendOptions& options)
@@ -50,6 +52,7 @@ class GlBackend final : public Backend {
     programs_.emplace(gl_);
     bakedTextures_.emplace(gl_);
     cookieTextures_.emplace(gl_);
+    shadowMaps_.emplace(gl_, options.variant.mutant);
     sceneDraws_.emplace(gl_);
     deferred_.emplace(gl_, options.variant.mutant);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
@@ -80,6 +83,7 @@ class GlBackend final : public Backend {
       deferred_->programs(constants);
     else
       programs_->program(constants);
+    if (frame.shadows.any()) shadowMaps_->prepareProgram(constants);
   }
 
   void prepareTextures(const lighting::Frame& frame) override {
@@ -87,12 +91,14 @@ class GlBackend final : public Backend {
     context_->makeCurrent();
     bakedTextures_->update(*frame.prepared);
     cookieTextures_->update(frame);  // binds the frame's cookie block and slots too
+    shadowMaps_->update(frame);      // the maps' textures, the shadow block, the slots' units
   }
 
   void draw(const lighting::Frame& frame) override {
     requireDrawableFeatures(frame);
     context_->makeCurrent();
     lastDrawMilliseconds_.reset();
+    lastShadowMilliseconds_.reset();
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     const bool isDeferred = deferred(frame);
     const GLuint forwardProgram = isDeferred ? 0 : programs_->program(constants);
@@ -100,6 +106,11 @@ class GlBackend final : public Backend {
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     sceneDraws_->update(frame);
     prepareTextures(frame);  // before the timed draws: uploads are not drawing
+    // SPEC 3.9: the maps are complete before anything that reads them, the
+    // forward pass or the deferred light pass; timed apart (GL allows one
+    // GL_TIME_ELAPSED query at a time) and added to the draw's time below. The passes leave the framebuffer, viewport and
+    // raster state to clearForward and beginFrame, which set all three.
+    shadowMaps_->render(frame, constants, *sceneDraws_);
     if (isDeferred)
       deferred_->beginFrame(frame, width_, height_);  // binds and clears the G-buffer
     else
@@ -123,6 +134,7 @@ class GlBackend final : public Backend {
     gl_.glFinish();  // draw() returns when the image is complete, as on Vulkan
     const std::string when = "drawing frame " + std::to_string(frame.index) + " of " + frame.scene().sourcePath;
     gl_.check(when.c_str());
+    lastShadowMilliseconds_ = shadowMaps_->finishTiming();
     if (timer_.get()) {
       const double hostMilliseconds =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - queryStart).count();
@@ -134,12 +146,23 @@ class GlBackend final : public Backend {
       // before glFinish returned; a longer time is a driver's wrong answer,
       // not a time (kTimerSlackMilliseconds: the two clocks' rounding).
       const double milliseconds = double(nanoseconds) * 1e-6;
-      if (milliseconds <= hostMilliseconds + kTimerSlackMilliseconds) lastDrawMilliseconds_ = milliseconds;
+      // The draw's time includes its shadow passes, as on Vulkan: GL allows
+      // one GL_TIME_ELAPSED query at a time, so they had their own.
+      if (milliseconds <= hostMilliseconds + kTimerSlackMilliseconds)
+        lastDrawMilliseconds_ = milliseconds + lastShadowMilliseconds_.value_or(0.0);
     }
     drawn_ = true;
   }
 
   std::optional<double> lastDrawDeviceMilliseconds() const override { return lastDrawMilliseconds_; }
+
+  std::vector<imaging::Image> readShadowMaps() override {
+    if (!drawn_) throw DriverError("readShadowMaps() before any draw()");
+    context_->makeCurrent();
+    return shadowMaps_->read();
+  }
+
+  std::optional<double> lastShadowPassDeviceMilliseconds() const override { return lastShadowMilliseconds_; }
 
   // OpenGL's row 0 is the bottom of the image; rows are flipped here so that
   // row 0 is the top (SPEC 1).
@@ -207,11 +230,13 @@ class GlBackend final : public Backend {
   std::optional<ForwardPrograms> programs_;
   std::optional<BakedTextures> bakedTextures_;
   std::optional<CookieTextures> cookieTextures_;
+  std::optional<ShadowMaps> shadowMaps_;
   std::optional<SceneDraws> sceneDraws_;
   std::optional<DeferredRenderer> deferred_;
   GlName color_, depth_, framebuffer_;
   GlName timer_;  // the GL_TIME_ELAPSED query; none when the driver's timer has 0 bits
   std::optional<double> lastDrawMilliseconds_;
+  std::optional<double> lastShadowMilliseconds_;  // the shadow passes' GL_TIME_ELAPSED query
   int width_ = 0, height_ = 0;
   bool drawn_ = false;
 };

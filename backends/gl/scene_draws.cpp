@@ -20,7 +20,11 @@ void SceneDraws::bindFrameBlock() const {
                         sizeof(lighting::GpuFrameBlock));
 }
 
-void SceneDraws::drawObjects(const BakedTextures& baked) const {
+void SceneDraws::drawObjects(const BakedTextures& baked) const { draw(&baked); }
+
+void SceneDraws::drawGeometry() const { draw(nullptr); }
+
+void SceneDraws::draw(const BakedTextures* baked) const {
   gl_.glBindVertexArray(vertexArray_.get());
   bindFrameBlock();
   for (std::size_t o = 0; o < objects_.size(); ++o) {
@@ -28,7 +32,7 @@ void SceneDraws::drawObjects(const BakedTextures& baked) const {
     if (range.indexCount == 0) continue;
     gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kObjectBlockBinding, objectUniforms_.get(), GLintptr(o * objectStride_),
                           sizeof(lighting::GpuObjectBlock));
-    baked.bind(int(o));
+    if (baked) baked->bind(int(o));
     const auto firstIndex = reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t));
     gl_.glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT, firstIndex,
                                  range.vertexOffset);

@@ -25,10 +25,14 @@ class SceneDraws {
   void bindFrameBlock() const;
   // Draws every object with the current program and framebuffer state.
   void drawObjects(const BakedTextures& baked) const;
+  // The same draws without the baked maps, for a program that samples none
+  // (the shadow-caster pass): only the frame and object blocks are bound.
+  void drawGeometry() const;
 
  private:
   void uploadGeometry(const lighting::Frame& frame);
   void writeUniforms(const lighting::Frame& frame);
+  void draw(const BakedTextures* baked) const;  // binds `baked`'s maps per object unless null
 
   const GlFunctions& gl_;
   GlName vertexArray_, vertices_, indices_;

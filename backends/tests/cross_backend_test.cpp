@@ -25,8 +25,14 @@ TEST_P(GlAgreesWithVulkan, OnEveryScene) {
   const auto gl = backends::testing::createOrNull(GetParam(), whyNot);
   if (!gl) GTEST_SKIP() << whyNot;
 
+  // A driver's known mismatches with SPEC (softpipe's filtered shadow
+  // compares) are its own; the comparison with the reference reports them.
+  const std::set<std::string> expectedFailures =
+      backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_FILE);
+  const std::string suffix = GetParam().suffix;
   const int scenes = backends::testing::forEachSuiteScene(
-      LIGHTCTS_SCENES_DIR, *vulkan, *gl, [](const backends::testing::SceneRenders& r) {
+      LIGHTCTS_SCENES_DIR, *vulkan, *gl, [&](const backends::testing::SceneRenders& r) {
+        if (expectedFailures.contains(backends::testing::sceneTestName(r.file, suffix))) return;
         const imaging::Image& a = r.first;
         const imaging::Image& b = r.second;
         ASSERT_EQ(a.width, b.width);

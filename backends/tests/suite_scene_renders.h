@@ -10,7 +10,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <set>
+#include <string>
 #include <vector>
 
 namespace backends::testing {
@@ -37,6 +40,25 @@ inline int forEachSuiteScene(const std::filesystem::path& scenesDir, Backend& fi
     check({file, first.render(frame), second.render(frame), reference::ReferenceRenderer(prepared).render(frame)});
   }
   return int(files.size());
+}
+
+// SPEC 10's name of a scene file's test on a combination: <group>.<name>.<suffix>.
+inline std::string sceneTestName(const std::filesystem::path& file, const std::string& suffix) {
+  return file.parent_path().filename().string() + "." + file.stem().string() + "." + suffix;
+}
+
+// The tests an expected-failures file (suite/expected-failures/) lists: a
+// driver's known mismatches, which a test comparing two backends must not
+// count against it either. Only the names; the format is runner/expected_failures.h's.
+inline std::set<std::string> expectedFailingTests(const std::filesystem::path& file) {
+  std::set<std::string> tests;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::size_t comma = line.find(',');
+    if (comma != std::string::npos) tests.insert(line.substr(0, comma));
+  }
+  return tests;
 }
 
 }  // namespace backends::testing

@@ -15,9 +15,8 @@ namespace {
 
 constexpr std::uint32_t kTextureSlots = lighting::kMaxCookieTextures;
 constexpr std::uint32_t kCubeSlots = lighting::kMaxCookieCubes;
-constexpr std::uint32_t kFirstTextureBinding = 1;
-constexpr std::uint32_t kFirstCubeBinding = kFirstTextureBinding + kTextureSlots;
-constexpr std::uint32_t kBindingCount = kFirstCubeBinding + kCubeSlots;
+static_assert(kFirstCookieCubeBinding == kFirstCookieTextureBinding + kTextureSlots);
+constexpr std::uint32_t kBindingCount = kFirstCookieCubeBinding + kCubeSlots;  // the block and the slots
 
 constexpr std::array<float, 4> kStandInTexel{1.0f, 0.0f, 0.0f, 1.0f};
 
@@ -34,33 +33,19 @@ void requireSize(const VulkanDevice& device, const lighting::Light& light) {
 
 }  // namespace
 
-vk::raii::DescriptorSetLayout createCookieSetLayout(const vk::raii::Device& device) {
-  const auto stages = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
-  std::array<vk::DescriptorSetLayoutBinding, kBindingCount> bindings;
-  bindings[0] = {.binding = 0, .descriptorType = vk::DescriptorType::eUniformBuffer, .descriptorCount = 1,
-                 .stageFlags = stages};
-  for (std::uint32_t b = 1; b < kBindingCount; ++b)
-    bindings[b] = {.binding = b, .descriptorType = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 1,
-                   .stageFlags = stages};
-  return vk::raii::DescriptorSetLayout(
-      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
-}
-
-CookieTextures::CookieTextures(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout)
+CookieTextures::CookieTextures(const VulkanDevice& device, vk::DescriptorSet set)
     : device_(device),
       repeat_(createSingleLevelSampler(device.device, vk::Filter::eLinear, vk::SamplerAddressMode::eRepeat)),
       clamp_(createSingleLevelSampler(device.device, vk::Filter::eLinear, vk::SamplerAddressMode::eClampToEdge)),
       nearest_(createSingleLevelSampler(device.device, vk::Filter::eNearest, vk::SamplerAddressMode::eClampToEdge)),
       noTexture_(createSampledMapImage(device, {1, 1})),
       noCube_(createSampledCubeImage(device, 1)),
-      block_(device, sizeof(lighting::GpuCookieBlock), vk::BufferUsageFlagBits::eUniformBuffer) {
+      block_(device, sizeof(lighting::GpuCookieBlock), vk::BufferUsageFlagBits::eUniformBuffer),
+      set_(set) {
   std::vector<float> cube;
   for (int face = 0; face < 6; ++face) cube.insert(cube.end(), kStandInTexel.begin(), kStandInTexel.end());
   const std::array<TextureUpload, 2> uploads{{{&noTexture_, kStandInTexel}, {&noCube_, cube}}};
   uploadTextures(device, uploads);
-  const std::array<vk::DescriptorPoolSize, 2> perSet{{{vk::DescriptorType::eUniformBuffer, 1},
-                                                      {vk::DescriptorType::eCombinedImageSampler, kBindingCount - 1}}};
-  sets_ = DescriptorSets(device.device, layout, perSet, 1);
   const lighting::GpuCookieBlock empty{};
   block_.write(std::span(&empty, 1));
   writeSet(nullptr);
@@ -127,10 +112,10 @@ void CookieTextures::writeSet(const lighting::Frame* frame) {
   }
   const vk::DescriptorBufferInfo blockInfo{*block_.buffer, 0, sizeof(lighting::GpuCookieBlock)};
   std::array<vk::WriteDescriptorSet, kBindingCount> writes;
-  writes[0] = {.dstSet = set(), .dstBinding = 0, .descriptorCount = 1,
+  writes[0] = {.dstSet = set_, .dstBinding = kCookieBlockBinding, .descriptorCount = 1,
                .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &blockInfo};
   for (std::uint32_t b = 1; b < kBindingCount; ++b)
-    writes[b] = {.dstSet = set(), .dstBinding = b, .descriptorCount = 1,
+    writes[b] = {.dstSet = set_, .dstBinding = kCookieBlockBinding + b, .descriptorCount = 1,
                  .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &images[b - 1]};
   device_.device.updateDescriptorSets(writes, {});
 }

@@ -1,7 +1,7 @@
-// The light cookies of SPEC 3.10 on the device: descriptor set 3 of every
-// pipeline that lights (shaders/cookies.glsl): binding 0 the frame's
-// lighting::GpuCookieBlock, bindings 1-4 the 2D slots, 5-6 the cube slots,
-// read by the vertex stage (legacy vertex lights) and the fragment stage.
+// The light cookies of SPEC 3.10 on the device: their bindings of the light
+// texture set (light_texture_set.h, shaders/cookies.glsl): binding 0 the
+// frame's lighting::GpuCookieBlock, bindings 1-4 the 2D slots, 5-6 the cube
+// slots, read by the vertex stage (legacy vertex lights) and the fragment stage.
 //
 // Every cookie of a prepared scene is uploaded once (RGBA32F, value in r,
 // backends/cookie_texels.h); each frame writes its block and points the slots
@@ -10,8 +10,8 @@
 // so the set is always valid, in scenes without cookies too.
 #pragma once
 
-#include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
+#include "backends/vulkan/light_texture_set.h"
 #include "lighting/frame.h"
 
 #include <memory>
@@ -20,14 +20,10 @@
 
 namespace backends::vulkan {
 
-constexpr std::uint32_t kCookieSetIndex = 3;
-
-// The layout of set 3.
-vk::raii::DescriptorSetLayout createCookieSetLayout(const vk::raii::Device& device);
-
 class CookieTextures {
  public:
-  CookieTextures(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout);
+  // Writes its bindings of `set` (stand-ins until the first update).
+  CookieTextures(const VulkanDevice& device, vk::DescriptorSet set);
   CookieTextures(const CookieTextures&) = delete;  // the descriptor infos point at members
 
   // Uploads `frame`'s scene's cookies when the prepared scene is new (throws
@@ -35,7 +31,6 @@ class CookieTextures {
   // size), then writes the frame's block and slots into the set. Call only
   // while no submitted command buffer uses the set.
   void update(const lighting::Frame& frame);
-  vk::DescriptorSet set() const { return *sets_.sets.front(); }
   // Wall time of the last scene's upload (0 for a scene without cookies).
   double uploadMilliseconds() const { return uploadMilliseconds_; }
 
@@ -52,7 +47,7 @@ class CookieTextures {
   HostBuffer block_;
   std::shared_ptr<const lighting::PreparedScene> scene_;
   std::vector<std::optional<DeviceImage>> images_;  // per scene light: its cookie, if it has one
-  DescriptorSets sets_;
+  vk::DescriptorSet set_;
   double uploadMilliseconds_ = 0;
 };
 

@@ -14,7 +14,7 @@ namespace backends::vulkan {
 
 DeferredPipelines::DeferredPipelines(const VulkanDevice& device, const PipelineCacheFile& cache,
                                      const vk::raii::DescriptorSetLayout& mapsSetLayout,
-                                     const vk::raii::DescriptorSetLayout& cookieSetLayout)
+                                     const vk::raii::DescriptorSetLayout& lightTextureSetLayout)
     : builder_(device, cache),
       gbufferStages_(device.device, shaders::forwardVertexSpirv(), shaders::gbufferFragmentSpirv()),
       lightStages_(device.device, shaders::deferredLightVertexSpirv(), shaders::deferredLightFragmentSpirv()),
@@ -39,7 +39,7 @@ DeferredPipelines::DeferredPipelines(const VulkanDevice& device, const PipelineC
   texturesSetLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = textures.size(), .pBindings = textures.data()});
   const std::array<vk::DescriptorSetLayout, 4> setLayouts{*uniformsSetLayout_, *mapsSetLayout, *texturesSetLayout_,
-                                                          *cookieSetLayout};
+                                                          *lightTextureSetLayout};
   layout_ = vk::raii::PipelineLayout(
       device.device, vk::PipelineLayoutCreateInfo{.setLayoutCount = setLayouts.size(), .pSetLayouts = setLayouts.data()});
 }

@@ -28,11 +28,11 @@ namespace backends::vulkan {
 
 class DeferredPipelines {
  public:
-  // `mapsSetLayout` and `cookieSetLayout` are the forward pipeline's set 1
+  // `mapsSetLayout` and `lightTextureSetLayout` are the forward pipeline's set 1
   // and set 3 layouts; they must outlive this.
   DeferredPipelines(const VulkanDevice& device, const PipelineCacheFile& cache,
                     const vk::raii::DescriptorSetLayout& mapsSetLayout,
-                    const vk::raii::DescriptorSetLayout& cookieSetLayout);
+                    const vk::raii::DescriptorSetLayout& lightTextureSetLayout);
 
   const vk::raii::DescriptorSetLayout& uniformsSetLayout() const { return uniformsSetLayout_; }
   const vk::raii::DescriptorSetLayout& texturesSetLayout() const { return texturesSetLayout_; }

@@ -1,6 +1,6 @@
 #include "backends/vulkan/deferred_renderer.h"
 
-#include "backends/vulkan/cookie_textures.h"
+#include "backends/vulkan/light_texture_set.h"
 #include "backends/vulkan/scene_pass.h"
 #include "lighting/deferred_lights.h"
 #include "lighting/gpu_packing.h"
@@ -12,9 +12,9 @@ namespace backends::vulkan {
 
 DeferredRenderer::DeferredRenderer(const VulkanDevice& device, const PipelineCacheFile& cache,
                                    const vk::raii::DescriptorSetLayout& mapsSetLayout,
-                                   const vk::raii::DescriptorSetLayout& cookieSetLayout,
+                                   const vk::raii::DescriptorSetLayout& lightTextureSetLayout,
                                    const shaders::ShaderVariant& variant)
-    : device_(device), variant_(variant), pipelines_(device, cache, mapsSetLayout, cookieSetLayout) {}
+    : device_(device), variant_(variant), pipelines_(device, cache, mapsSetLayout, lightTextureSetLayout) {}
 
 void DeferredRenderer::preparePipelines(const lighting::Frame& frame) {
   choosePipelines(frame, lighting::lightVolumes(frame));
@@ -65,7 +65,7 @@ void DeferredRenderer::prepareFrame(const lighting::Frame& frame) {
 }
 
 void DeferredRenderer::record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry,
-                              const SceneBakedTextures& maps, vk::DescriptorSet cookies,
+                              const SceneBakedTextures& maps, vk::DescriptorSet lightTextures,
                               const RenderTarget& output) const {
   std::vector<vk::ImageMemoryBarrier2> start;
   for (const DeviceImage& image : targets_->gbuffer) start.push_back(discardToColorAttachment(image));
@@ -74,7 +74,7 @@ void DeferredRenderer::record(const vk::raii::CommandBuffer& commands, const Sce
   start.push_back(discardToDepthAttachment(targets_->depth));
   recordBarriers(commands, start);
   // One pipeline layout for the three passes: set 3 stays bound through them.
-  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kCookieSetIndex, {cookies}, {});
+  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kLightTextureSetIndex, {lightTextures}, {});
 
   recordGBufferPass(commands, geometry, maps);
 

@@ -26,12 +26,12 @@ namespace backends::vulkan {
 
 class DeferredRenderer {
  public:
-  // `mapsSetLayout` and `cookieSetLayout` are the forward pipeline's set 1
+  // `mapsSetLayout` and `lightTextureSetLayout` are the forward pipeline's set 1
   // and set 3 layouts (the scene's map sets and the cookie set are allocated
   // with them); they must outlive this.
   DeferredRenderer(const VulkanDevice& device, const PipelineCacheFile& cache,
                    const vk::raii::DescriptorSetLayout& mapsSetLayout,
-                   const vk::raii::DescriptorSetLayout& cookieSetLayout, const shaders::ShaderVariant& variant);
+                   const vk::raii::DescriptorSetLayout& lightTextureSetLayout, const shaders::ShaderVariant& variant);
 
   // Builds every pipeline a deferred `frame` draws with. Throws
   // NotSupportedError when the device lacks a format feature the frame's
@@ -41,9 +41,9 @@ class DeferredRenderer {
   // size and light buffer format, its uniforms and light volumes, its pipelines.
   void prepareFrame(const lighting::Frame& frame);
   // The three passes, after prepareFrame(frame) of the frame to draw.
-  // `cookies` is bound as set 3 for all of them.
+  // `lightTextures` (the cookies and shadow maps) is bound as set 3 for all of them.
   void record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry, const SceneBakedTextures& maps,
-              vk::DescriptorSet cookies, const RenderTarget& output) const;
+              vk::DescriptorSet lightTextures, const RenderTarget& output) const;
 
  private:
   // The pipelines of `frame`'s passes and of each of its volumes.

@@ -6,8 +6,9 @@ namespace backends::vulkan {
 namespace {
 
 constexpr std::uint32_t kBegin = 0;
-constexpr std::uint32_t kEnd = 1;
-constexpr std::uint32_t kQueryCount = 2;
+constexpr std::uint32_t kShadowPassesEnd = 1;
+constexpr std::uint32_t kEnd = 2;
+constexpr std::uint32_t kQueryCount = 3;
 
 }  // namespace
 
@@ -34,19 +35,27 @@ void DrawTimestamps::recordBegin(const vk::raii::CommandBuffer& commands) const 
   commands.writeTimestamp(vk::PipelineStageFlagBits::eTopOfPipe, *pool_, kBegin);
 }
 
+void DrawTimestamps::recordShadowPassesEnd(const vk::raii::CommandBuffer& commands) const {
+  commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *pool_, kShadowPassesEnd);
+}
+
 void DrawTimestamps::recordEnd(const vk::raii::CommandBuffer& commands) const {
   commands.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *pool_, kEnd);
 }
 
-double DrawTimestamps::milliseconds() const {
+double DrawTimestamps::milliseconds() const { return interval(kEnd); }
+
+double DrawTimestamps::shadowPassMilliseconds() const { return interval(kShadowPassesEnd); }
+
+double DrawTimestamps::interval(std::uint32_t to) const {
   // WAIT costs nothing here: the fence of the command buffer that wrote them
-  // has signalled, so both queries are available.
+  // has signalled, so every query is available.
   const auto [result, ticks] = pool_.getResults<std::uint64_t>(
       0, kQueryCount, kQueryCount * sizeof(std::uint64_t), sizeof(std::uint64_t),
       vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
   if (result != vk::Result::eSuccess)
     throw DriverError("reading the draw's timestamp queries returned " + vk::to_string(result));
-  return timestampIntervalMilliseconds(ticks[kBegin], ticks[kEnd], validBits_, nanosecondsPerTick_);
+  return timestampIntervalMilliseconds(ticks[kBegin], ticks[to], validBits_, nanosecondsPerTick_);
 }
 
 }  // namespace backends::vulkan

@@ -1,6 +1,6 @@
-// The device's own time for one draw: two timestamp queries, written at the
-// top of the pipe before the forward pass and at the bottom of the pipe after
-// it, in draw()'s command buffer. The pool is reset in that same command
+// The device's own time for one draw: three timestamp queries, written at
+// the top of the pipe before the shadow-map passes, at the bottom of the pipe
+// after them and after the lighting passes, in draw()'s command buffer. The pool is reset in that same command
 // buffer (outside dynamic rendering) before the writes, so every draw starts
 // from unavailable queries, and read once the draw's fence has signalled: the
 // results are then already there, so reading them waits for nothing.
@@ -30,12 +30,18 @@ class DrawTimestamps {
 
   // First in the command buffer: resets both queries, writes the first.
   void recordBegin(const vk::raii::CommandBuffer& commands) const;
+  // After the shadow-map passes (SPEC 3.9), before the lighting: every draw
+  // writes it, maps or not, so all three queries are always available.
+  void recordShadowPassesEnd(const vk::raii::CommandBuffer& commands) const;
   // Last in the command buffer, after the rendering has ended.
   void recordEnd(const vk::raii::CommandBuffer& commands) const;
-  // After the command buffer's fence has signalled: the interval between them.
+  // After the command buffer's fence has signalled: from the first to the
+  // last timestamp (the whole draw), and to the shadow passes' end.
   double milliseconds() const;
+  double shadowPassMilliseconds() const;
 
  private:
+  double interval(std::uint32_t toQuery) const;
   vk::raii::QueryPool pool_{nullptr};
   std::uint32_t validBits_;
   float nanosecondsPerTick_;

@@ -1,7 +1,7 @@
 #include "backends/vulkan/forward_pipeline.h"
 
 #include "backends/vulkan/baked_textures.h"
-#include "backends/vulkan/cookie_textures.h"
+#include "backends/vulkan/light_texture_set.h"
 #include "backends/vulkan/scene_uniforms.h"
 #include "shaders/embedded_spirv.h"
 
@@ -18,12 +18,12 @@ ForwardPipelines::ForwardPipelines(const VulkanDevice& device, const PipelineCac
   // Set 1 is in every pipeline's layout: the fragment stage's SPIR-V declares
   // the map samplers whatever the LIGHTMAP and SHADOW_MASK constants say.
   mapsSetLayout_ = createBakedMapsSetLayout(device.device);
-  // Set 3 likewise (the cookies): the shaders share one set number with the
+  // Set 3 likewise (the cookies and shadow maps): the shaders share one set number with the
   // deferred passes, whose set 2 forward has no use for, so set 2 is empty.
   emptySetLayout_ = vk::raii::DescriptorSetLayout(device.device, vk::DescriptorSetLayoutCreateInfo{});
-  cookieSetLayout_ = createCookieSetLayout(device.device);
+  lightTextureSetLayout_ = createLightTextureSetLayout(device.device);
   const std::array<vk::DescriptorSetLayout, 4> setLayouts{*setLayout_, *mapsSetLayout_, *emptySetLayout_,
-                                                          *cookieSetLayout_};
+                                                          *lightTextureSetLayout_};
   layout_ = vk::raii::PipelineLayout(
       device.device, vk::PipelineLayoutCreateInfo{.setLayoutCount = setLayouts.size(), .pSetLayouts = setLayouts.data()});
 }

@@ -91,7 +91,13 @@ void recordSceneObjectsPass(const vk::raii::CommandBuffer& commands, const Scene
                                             .colorAttachmentCount = std::uint32_t(pass.colors.size()),
                                             .pColorAttachments = pass.colors.data(),
                                             .pDepthAttachment = &pass.depth});
-  setFlippedViewport(commands, pass.extent);
+  if (pass.flipViewport) {
+    setFlippedViewport(commands, pass.extent);
+  } else {
+    commands.setViewport(0, vk::Viewport{.x = 0.0f, .y = 0.0f, .width = float(pass.extent.width),
+                                         .height = float(pass.extent.height), .minDepth = 0.0f, .maxDepth = 1.0f});
+    commands.setScissor(0, vk::Rect2D{{0, 0}, pass.extent});
+  }
   commands.bindPipeline(vk::PipelineBindPoint::eGraphics, pass.pipeline);
   commands.bindVertexBuffers(0, {*geometry.vertices.buffer}, {vk::DeviceSize(0)});
   commands.bindIndexBuffer(*geometry.indices.buffer, 0, vk::IndexType::eUint32);

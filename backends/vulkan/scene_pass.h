@@ -49,6 +49,9 @@ struct SceneObjectsPass {
   // Set 1, bound for every object, maps or not (the fragment stage declares
   // it); null for a pass whose shaders read no maps.
   const SceneBakedTextures* maps = nullptr;
+  // The camera's passes flip (setFlippedViewport); a shadow map's does not:
+  // its texel row 0 is map coordinate mv near 0, NDC y = -1.
+  bool flipViewport = true;
 };
 
 // Begins rendering, draws every object of `geometry` with `pass`, ends.

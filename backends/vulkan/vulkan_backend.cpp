@@ -3,6 +3,8 @@
 #include "backends/drawable_features.h"
 #include "backends/vulkan/baked_textures.h"
 #include "backends/vulkan/cookie_textures.h"
+#include "backends/vulkan/light_texture_set.h"
+#include "backends/vulkan/shadow_maps.h"
 #include "backends/vulkan/deferred_renderer.h"
 #include "backends/vulkan/draw_timestamps.h"
 #include "backends/vulkan/forward_pipeline.h"
@@ -32,7 +34,9 @@ class VulkanBackend final : public Backend {
         cache_(device_),
         pipelines_(device_, cache_),
         mapDefaults_(device_, pipelines_.mapsSetLayout()),
-        cookies_(device_, pipelines_.cookieSetLayout()) {
+        lightTextures_(device_.device, pipelines_.lightTextureSetLayout()),
+        cookies_(device_, lightTextures_.set()),
+        shadows_(device_, cache_, lightTextures_.set(), options.variant.mutant) {
     pool_ = vk::raii::CommandPool(device_.device,
                                   vk::CommandPoolCreateInfo{.flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                             .queueFamilyIndex = device_.queueFamily});
@@ -70,6 +74,8 @@ class VulkanBackend final : public Backend {
     }
     cookies_.update(frame);  // uploads a new scene's cookies; this frame's block and slots
     checkValidation("writing the cookies of " + frame.scene().sourcePath);
+    shadows_.update(frame);  // this frame's shadow maps, blocks and slots (SPEC 3.9)
+    checkValidation("preparing the shadow maps of " + frame.scene().sourcePath);
   }
 
   void draw(const lighting::Frame& frame) override {
@@ -102,6 +108,8 @@ class VulkanBackend final : public Backend {
     submit(
         [&](const vk::raii::CommandBuffer& cb) {
           if (timestamps_) timestamps_->recordBegin(cb);
+          shadows_.record(cb, *geometry_);  // SPEC 3.9: the maps before the lighting that reads them
+          if (timestamps_) timestamps_->recordShadowPassesEnd(cb);
           recordForwardPass(cb, pipeline);
           if (timestamps_) timestamps_->recordEnd(cb);
         },
@@ -110,12 +118,19 @@ class VulkanBackend final : public Backend {
   }
 
   std::optional<double> lastDrawDeviceMilliseconds() const override { return lastDrawMilliseconds_; }
+  std::optional<double> lastShadowPassDeviceMilliseconds() const override { return lastShadowMilliseconds_; }
 
   imaging::Image readback() override {
     if (!drawn_) throw DriverError("readback() before any draw()");
     submit([&](const vk::raii::CommandBuffer& cb) { recordReadback(cb, *target_); }, "reading the image back");
     drawn_ = false;  // the colour target has left the attachment layout
     return stagingToImage(*target_);
+  }
+
+  std::vector<imaging::Image> readShadowMaps() override {
+    if (!shadows_.any()) return {};
+    submit([&](const vk::raii::CommandBuffer& cb) { shadows_.recordReadback(cb); }, "reading the shadow maps back");
+    return shadows_.readbackImages();
   }
 
  private:
@@ -126,7 +141,8 @@ class VulkanBackend final : public Backend {
   // Made on the first deferred frame: forward-only runs never build it.
   DeferredRenderer& deferred() {
     if (!deferred_)
-      deferred_.emplace(device_, cache_, pipelines_.mapsSetLayout(), pipelines_.cookieSetLayout(), options_.variant);
+      deferred_.emplace(device_, cache_, pipelines_.mapsSetLayout(), pipelines_.lightTextureSetLayout(),
+                        options_.variant);
     return *deferred_;
   }
 
@@ -139,7 +155,9 @@ class VulkanBackend final : public Backend {
     submit(
         [&](const vk::raii::CommandBuffer& cb) {
           if (timestamps_) timestamps_->recordBegin(cb);
-          renderer.record(cb, *geometry_, *maps_, cookies_.set(), *target_);
+          shadows_.record(cb, *geometry_);  // the light pass samples the forward pass's maps
+          if (timestamps_) timestamps_->recordShadowPassesEnd(cb);
+          renderer.record(cb, *geometry_, *maps_, lightTextures_.set(), *target_);
           if (timestamps_) timestamps_->recordEnd(cb);
         },
         when);
@@ -148,10 +166,13 @@ class VulkanBackend final : public Backend {
 
   // After a draw's submission: its device time, and the target is ready to read back.
   void finishDraw(const std::string& when) {
+    lastShadowMilliseconds_.reset();
     if (timestamps_) {
       const double milliseconds = timestamps_->milliseconds();
+      const double shadowMilliseconds = timestamps_->shadowPassMilliseconds();
       checkValidation(when + " (reading its timestamps)");
       lastDrawMilliseconds_ = milliseconds;
+      if (shadows_.any()) lastShadowMilliseconds_ = shadowMilliseconds;
     }
     drawn_ = true;
   }
@@ -160,7 +181,8 @@ class VulkanBackend final : public Backend {
     const std::array<vk::ImageMemoryBarrier2, 2> toAttachment{discardToColorAttachment(target_->color),
                                                               discardToDepthAttachment(target_->depth)};
     recordBarriers(cb, toAttachment);
-    cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kCookieSetIndex, {cookies_.set()}, {});
+    cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kLightTextureSetIndex,
+                          {lightTextures_.set()}, {});
     // Background: value 0 (SPEC 6), alpha 1 (SPEC 8).
     const std::array<vk::RenderingAttachmentInfo, 1> color{clearedColor(target_->color, 0.0f, 1.0f)};
     recordSceneObjectsPass(cb, *geometry_,
@@ -203,7 +225,9 @@ class VulkanBackend final : public Backend {
   PipelineCacheFile cache_;
   ForwardPipelines pipelines_;
   BakedMapDefaults mapDefaults_;
+  LightTextureSet lightTextures_;  // set 3: the cookies' and the shadow maps' bindings
   CookieTextures cookies_;
+  ShadowMaps shadows_;
   vk::raii::CommandPool pool_{nullptr};
   vk::raii::CommandBuffer commands_{nullptr};
   vk::raii::Fence fence_{nullptr};
@@ -214,6 +238,7 @@ class VulkanBackend final : public Backend {
   std::optional<DeferredRenderer> deferred_;
   std::optional<DrawTimestamps> timestamps_;  // empty when the queue writes no timestamps
   std::optional<double> lastDrawMilliseconds_;
+  std::optional<double> lastShadowMilliseconds_;  // the shadow passes' share of it
   bool drawn_ = false;
 };
 

@@ -186,6 +186,27 @@ TEST_F(EvidenceFolder, WritesEveryFileAndSummaryLast) {
   EXPECT_EQ(reference.pixels, images.reference.value.pixels);
 }
 
+// SPEC 3.9: the backend's and the reference's shadow maps, each view as EXR
+// with its values and a PNG for people, beside the rest.
+TEST_F(EvidenceFolder, WritesTheShadowMapsOfBothSides) {
+  const Images images = onePixelOff();
+  ShadowMapEvidence maps;
+  imaging::Image backend(2, 2, 1), reference(2, 2, 3);
+  backend.at(1, 0, 0) = 0.5f;
+  reference.at(1, 0, 2) = 0.75f;
+  maps.backend = {backend, backend};
+  maps.reference = {reference, reference};
+  writeEvidence(dir_.string(), compareImages(images.result, images.reference, {}), images.result, images.reference,
+                "t", &maps);
+  for (const char* name : {"shadow-map-0-backend.exr", "shadow-map-0-backend.png", "shadow-map-1-backend.exr",
+                           "shadow-map-0-reference.exr", "shadow-map-1-reference.png", "summary.json"})
+    EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
+  const imaging::Image back = imaging::readExr((dir_ / "shadow-map-1-backend.exr").string());
+  EXPECT_EQ(back.channels, 1);
+  EXPECT_EQ(back.at(1, 0, 0), 0.5f);
+  EXPECT_EQ(imaging::readExr((dir_ / "shadow-map-0-reference.exr").string()).at(1, 0, 2), 0.75f);
+}
+
 TEST_F(EvidenceFolder, ErrorMaskHoldsExactLevels) {
   Images images = onePixelOff();
   images.result.at(3, 2, 0) = std::numeric_limits<float>::quiet_NaN();

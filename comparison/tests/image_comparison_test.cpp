@@ -283,5 +283,43 @@ TEST(CompareImages, SizeMismatchMessageNamesTheSizes) {
   }
 }
 
+
+// SPEC 3.9's cap: more than 5% of the shadowed pixels ambiguous makes the
+// scene defective, a Fail whatever the pixels say; 5% exactly is allowed.
+TEST(CompareImages, ShadowAmbiguityOverTheCapIsADefectiveScene) {
+  Images images = uniform(4, 3);
+  images.reference.shadowedPixels = 100;
+  images.reference.ambiguousShadowPixels = 5;
+  Comparison c = compareImages(images.result, images.reference, {});
+  EXPECT_FALSE(c.defectiveScene);
+  EXPECT_EQ(c.verdict, Verdict::Pass);
+  images.reference.ambiguousShadowPixels = 6;
+  c = compareImages(images.result, images.reference, {});
+  EXPECT_TRUE(c.defectiveScene);
+  EXPECT_TRUE(c.comparisonPassed);  // every pixel agrees, and still:
+  EXPECT_EQ(c.verdict, Verdict::Fail);
+  EXPECT_EQ(c.shadowedPixels, 100);
+  EXPECT_EQ(c.ambiguousShadowPixels, 6);
+}
+
+// A failing pixel carries its shadow interval when the reference kept them.
+TEST(CompareImages, FailingPixelsCarryTheirShadowInterval) {
+  Images images = uniform(4, 3);
+  images.reference.shadowInterval = imaging::Image(4, 3, 3);
+  images.reference.shadowInterval.at(2, 1, 0) = 0.25f;
+  images.reference.shadowInterval.at(2, 1, 1) = 0.75f;
+  images.reference.shadowInterval.at(2, 1, 2) = 1.0f;
+  images.result.at(2, 1, 0) = 1.0f;  // 0.5 off, tolerance 0.25
+  images.result.at(1, 1, 0) = 1.0f;  // not shadowed
+  const Comparison c = compareImages(images.result, images.reference, {});
+  ASSERT_EQ(c.worst.size(), 2u);
+  const PixelReport& shadowed = c.worst[0].x == 2 ? c.worst[0] : c.worst[1];
+  const PixelReport& plain = c.worst[0].x == 2 ? c.worst[1] : c.worst[0];
+  EXPECT_TRUE(shadowed.shadowed);
+  EXPECT_EQ(shadowed.shadowLo, 0.25f);
+  EXPECT_EQ(shadowed.shadowHi, 0.75f);
+  EXPECT_FALSE(plain.shadowed);
+}
+
 }  // namespace
 }  // namespace comparison

@@ -28,6 +28,11 @@ inline constexpr const char* kFieldScene = "lights64-1280x720";
 // lights without their cookies (FieldSpec::cookieLights).
 inline constexpr const char* kCookiesMode = "cookies";
 inline constexpr const char* kCookieLightsMode = "cookie-lights";
+// The shadow modes of the field (SPEC 3.9 and 9): `shadows-<filter>-<N>`, the
+// field with FieldSpec::shadows at N texels with that filter, and
+// `shadow-lights`, the same lights casting nothing (FieldSpec::shadowLights).
+inline constexpr const char* kShadowLightsMode = "shadow-lights";
+std::string shadowModeName(lighting::ShadowFilter filter, int resolution);
 
 // One mode of the field: its benchmark name, its scene and its shader variant.
 struct FieldModeSpec {

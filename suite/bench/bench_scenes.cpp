@@ -220,7 +220,22 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
   }
   const double cellX = fieldX / spec.lightColumns, cellZ = kFieldZ / spec.lightRows;
   const double range = 0.85 * std::sqrt(cellX * cellZ / (1.6 * 0.9));
-  const bool cookieLights = spec.cookieLights || spec.cookies;
+  const bool shadowLights = spec.shadowLights || spec.shadows;
+  const bool cookieLights = spec.cookieLights || spec.cookies || shadowLights;
+  // SPEC 3.9's map of one of the shadow field's lights (FieldSpec::shadows).
+  const auto castShadows = [&](Light& light) {
+    if (!spec.shadows) return;
+    light.shadows = true;
+    ShadowMapSpec map;
+    map.resolution = spec.shadowResolution;
+    map.filter = light.type == LightType::Point && spec.shadowFilter == ShadowFilter::Tent3x3 ? ShadowFilter::Bilinear
+                                                                                              : spec.shadowFilter;
+    map.depthBias = kFieldShadowDepthBias;
+    map.normalBias = kFieldShadowNormalBias;
+    map.nearPlane = kFieldShadowNear;
+    map.extent = kFieldShadowExtent;
+    light.shadowMap = map;
+  };
   int seed = 0;  // each cookie its own pattern
   for (int i = 0; i < spec.lightColumns; ++i) {
     for (int k = 0; k < spec.lightRows; ++k) {
@@ -236,8 +251,11 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
         l.spotAngleDeg = kFieldSpotAngleDeg;
         l.innerSpotAngleDeg = kFieldSpotInnerAngleDeg;
         if (spec.cookies) l.cookie = spotCookie(spec.cookieSize, seed++);
+        if (shadowLights) castShadows(l);
       } else if (spec.cookies && inCells(kFieldCookieCubes, i, k)) {
         l.cookie = cubeCookie(spec.cookieSize, seed++);
+      } else if (shadowLights && i == kFieldShadowCube.column && k == kFieldShadowCube.row) {
+        castShadows(l);
       }
       s.lights.push_back(l);
     }
@@ -250,6 +268,7 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
     sun.color = {1.0, 0.95, 0.85};
     sun.intensity = 0.5;
     if (spec.cookies) sun.cookie = tiledCookie(spec.cookieSize);
+    if (shadowLights) castShadows(sun);
     s.lights.push_back(sun);
   }
   return s;

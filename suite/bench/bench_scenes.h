@@ -63,6 +63,18 @@ struct FieldSpec {
   bool cookieLights = false;
   bool cookies = false;
   int cookieSize = 256;
+  // The shadow modes (SPEC 3.9 and 9, shadow maps at 256 to 4096 texels with
+  // each filter, against ray-traced shadows): shadowLights: the cookie
+  // field's lights (the directional light and the two spots, cookieLights),
+  // with the point light of kFieldShadowCube; shadows: the same four lights
+  // casting real-time shadows (the 0.5 boxes onto the tiles) from maps of
+  // shadowResolution texels a side with shadowFilter (a point light's cube
+  // takes bilinear where the others take tent3x3, which SPEC 2 does not
+  // allow on it). That is 3 2D maps and 1 cube, within a frame's slots.
+  bool shadowLights = false;
+  bool shadows = false;
+  int shadowResolution = 1024;
+  lighting::ShadowFilter shadowFilter = lighting::ShadowFilter::Bilinear;
 };
 
 // The cookie field's lights (FieldSpec::cookieLights): the grid cells
@@ -77,6 +89,14 @@ inline constexpr FieldCell kFieldCookieCubes[] = {{1, 1}, {6, 6}};
 inline constexpr double kFieldCookieDirection[] = {0.35, -1.0, 0.2};
 inline constexpr double kFieldCookieTile = 1.8;  // world units a repeat, both axes
 inline constexpr double kFieldSpotAngleDeg = 120, kFieldSpotInnerAngleDeg = 90;
+// The shadow field's point light with a cube map (FieldSpec::shadows), and
+// its maps' shape: the directional box covers the whole field.
+inline constexpr FieldCell kFieldShadowCube = {1, 1};
+inline constexpr double kFieldShadowExtent = 6.6;  // half of the 12.8-unit field, and a margin
+inline constexpr double kFieldShadowDepthBias = 0.05, kFieldShadowNormalBias = 0.03, kFieldShadowNear = 0.05;
+
+// The shadow modes' map resolutions and filters (SPEC 9: 256 to 4096).
+inline constexpr int kShadowResolutions[] = {256, 512, 1024, 2048, 4096};
 
 // The srp material of the field's specular modes: a highlight of a few
 // pixels under each light seen from straight above (smoothness 0.8), with a

@@ -34,11 +34,22 @@ std::string referenceKeyOf(const FieldModeSpec& mode) {
   std::string key = std::string(kFieldScene) + (mode.field.mode == FrameMode::Legacy4x4 ? "/legacy" : "/srp");
   if (mode.field.specularBrdf) key.append("-").append(kSpecularSuffix);
   if (mode.field.cookies) key.append("-").append(kCookiesMode);
+  else if (mode.field.shadows) key.append("-shadows");  // every resolution and filter: ray-traced shadows
+  else if (mode.field.shadowLights) key.append("-").append(kShadowLightsMode);
   else if (mode.field.cookieLights) key.append("-").append(kCookieLightsMode);
   return key;
 }
 
 }  // namespace
+
+std::string shadowModeName(ShadowFilter filter, int resolution) {
+  const char* name = filter == ShadowFilter::Hard ? "hard" : filter == ShadowFilter::Bilinear ? "bilinear" : "tent3x3";
+  std::string mode = "shadows-";
+  mode += name;
+  mode += '-';
+  mode += std::to_string(resolution);
+  return mode;
+}
 
 // The modes of the speed-against-error plot: each profile and light path as
 // shipped (specialised shader), and with the full shader, which shows what
@@ -73,6 +84,21 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow) {
     modes.back().field.cookieLights = true;
     modes.push_back(modeOf(FrameMode::AllLights, false, kCookiesMode));
     modes.back().field.cookies = true;
+  }
+  // Shadow maps at 256 to 4096 texels with each filter (SPEC 3.9 and 9),
+  // each against ray-traced shadows (--ideal), and the same lights casting
+  // nothing: the full set only (bench.shadow-smoke runs one of them filtered),
+  // as for the cookies.
+  if (!quick) {
+    modes.push_back(modeOf(FrameMode::AllLights, false, kShadowLightsMode));
+    modes.back().field.shadowLights = true;
+    for (const ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Bilinear, ShadowFilter::Tent3x3})
+      for (const int resolution : kShadowResolutions) {
+        modes.push_back(modeOf(FrameMode::AllLights, false, shadowModeName(filter, resolution)));
+        modes.back().field.shadows = true;
+        modes.back().field.shadowResolution = resolution;
+        modes.back().field.shadowFilter = filter;
+      }
   }
   for (const FrameMode deferred : {FrameMode::DeferredHdr32, FrameMode::DeferredHdr16, FrameMode::DeferredLdr8})
     modes.push_back(modeOf(deferred, false, modeName(deferred)));
