@@ -138,6 +138,7 @@ void ShadowMaps::ensureSlot(SlotImage& slot, int resolution, bool cube) {
                                                                            face, 1}});
   slot.resolution = resolution;
   slot.cube = cube;
+  slot.ready = false;
 }
 
 void ShadowMaps::update(const lighting::Frame& frame) {
@@ -192,18 +193,31 @@ void ShadowMaps::writeSet(const lighting::Frame* frame) {
   device_.device.updateDescriptorSets(writes, {});
 }
 
-void ShadowMaps::record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry) const {
-  std::vector<vk::ImageMemoryBarrier2> toAttachment;
-  for (const SlotImage& slot : slots_)
-    toAttachment.push_back(depthBarrier(*slot.image, vk::PipelineStageFlagBits2::eAllCommands,
+void ShadowMaps::record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry) {
+  // Which slots this frame draws; the others keep what they hold (a stand-in
+  // of 1, or a map no light of this frame reads), cleared once when made.
+  std::array<bool, lighting::kGpuShadowSlots> drawn{};
+  for (const lighting::ShadowPassView& v : views_) drawn[v.slot] = true;
+  std::vector<vk::ImageMemoryBarrier2> toAttachment, toSampled;
+  for (int s = 0; s < lighting::kGpuShadowSlots; ++s) {
+    if (!drawn[s] && slots_[s].ready) continue;
+    const DeviceImage& image = *slots_[s].image;
+    toAttachment.push_back(depthBarrier(image, vk::PipelineStageFlagBits2::eAllCommands,
                                         vk::AccessFlagBits2::eMemoryWrite, vk::ImageLayout::eUndefined, kDepthTests,
                                         vk::AccessFlagBits2::eDepthStencilAttachmentRead |
                                             vk::AccessFlagBits2::eDepthStencilAttachmentWrite,
                                         vk::ImageLayout::eDepthAttachmentOptimal));
+    toSampled.push_back(depthBarrier(image, kDepthTests, vk::AccessFlagBits2::eDepthStencilAttachmentWrite,
+                                     vk::ImageLayout::eDepthAttachmentOptimal,
+                                     vk::PipelineStageFlagBits2::eFragmentShader,
+                                     vk::AccessFlagBits2::eShaderSampledRead, kSampledDepth));
+  }
+  if (toAttachment.empty()) return;  // a frame without shadows, every slot ready: nothing to do
   recordBarriers(commands, toAttachment);
   const vk::DescriptorSet passSet = *passSets_.sets.front();
   for (int s = 0; s < lighting::kGpuShadowSlots; ++s) {
-    const SlotImage& slot = slots_[s];
+    SlotImage& slot = slots_[s];
+    if (!drawn[s] && slot.ready) continue;
     const std::uint32_t n = std::uint32_t(slot.resolution);
     for (std::uint32_t layer = 0; layer < slot.image->layers; ++layer) {
       const vk::ImageView target = slot.cube ? *slot.faces[layer] : *slot.image->view;
@@ -212,7 +226,7 @@ void ShadowMaps::record(const vk::raii::CommandBuffer& commands, const SceneGeom
         if (views_[v].slot == s && views_[v].face == int(layer)) view = v;
       const vk::RenderingAttachmentInfo depth = clearedDepthView(target);
       if (!view) {
-        // An unused slot: a map of 1, never read (its kind is None).
+        // A slot no light of this frame has: a map of 1, never read (its kind is None).
         commands.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, {n, n}}, .layerCount = 1,
                                                   .pDepthAttachment = &depth});
         commands.endRendering();
@@ -234,13 +248,8 @@ void ShadowMaps::record(const vk::raii::CommandBuffer& commands, const SceneGeom
                               // Texel row 0 is mv = 0.5 / N: NDC y = -1 on framebuffer row 0.
                               .flipViewport = false});
     }
+    slot.ready = true;  // in the sampled layout once the submission completes (draw waits for it)
   }
-  std::vector<vk::ImageMemoryBarrier2> toSampled;
-  for (const SlotImage& slot : slots_)
-    toSampled.push_back(depthBarrier(*slot.image, kDepthTests, vk::AccessFlagBits2::eDepthStencilAttachmentWrite,
-                                     vk::ImageLayout::eDepthAttachmentOptimal,
-                                     vk::PipelineStageFlagBits2::eFragmentShader,
-                                     vk::AccessFlagBits2::eShaderSampledRead, kSampledDepth));
   recordBarriers(commands, toSampled);
 }
 

@@ -7,8 +7,9 @@
 // for a point light), kept while the resolution stays. Every draw records
 // one pass per lighting::ShadowPassView (every object, shadow_caster.vert,
 // lighting::kShadowCasterState) before the lighting passes, then hands the
-// maps to the fragment stage; an unused slot is a 1 x 1 map cleared to 1,
-// so the set is always valid, in scenes without shadows too. The compare
+// maps to the fragment stage; an unused slot is a 1 x 1 map cleared to 1
+// once, so the set is always valid, in scenes without shadows too, and such
+// scenes pay for no pass. The compare
 // samplers are LESS_OR_EQUAL (LESS for the shadow-compare-less mutant),
 // nearest for `hard`, linear otherwise, clamped to the edge.
 #pragma once
@@ -42,8 +43,10 @@ class ShadowMaps {
   // buffer uses the set.
   void update(const lighting::Frame& frame);
   // Records every view's depth pass of the frame last updated, and the
-  // barriers that hand every slot to the lighting passes' fragment stage.
-  void record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry) const;
+  // barriers that hand those slots to the lighting passes' fragment stage;
+  // a slot made since the last draw is cleared to 1 once. A frame without
+  // shadow maps records nothing once every slot is ready.
+  void record(const vk::raii::CommandBuffer& commands, const SceneGeometry& geometry);
   // Records copies of every view of the last recorded maps into a staging
   // buffer (readback evidence), leaving them sampled again.
   void recordReadback(const vk::raii::CommandBuffer& commands);
@@ -57,6 +60,7 @@ class ShadowMaps {
     std::vector<vk::raii::ImageView> faces;  // per layer: the attachment view of one face
     int resolution = 0;
     bool cube = false;
+    bool ready = false;  // cleared or drawn, and left in the sampled layout
   };
   void ensureSlot(SlotImage& slot, int resolution, bool cube);
   void writeSet(const lighting::Frame* frame);
