@@ -310,6 +310,38 @@ TEST(BenchReport, ABrokenModeIsListedAsBrokenAndNeverAPoint) {
   EXPECT_NE(vulkan.find("<tr><td>frame/vulkan/lights64-1280x720/all-lights</td>"), std::string::npos);
 }
 
+// SPEC 3.9's shadow-map modes get their own section per backend: the
+// front of resolution and filter among them alone, with the shadow passes'
+// time. Hand-derived: hard-256 (5 ms, 0.02) and bilinear-1024 (7 ms, 0.01)
+// are on the front; bilinear-256 (6 ms, 0.03) is slower and worse than
+// hard-256, so it is not.
+nlohmann::ordered_json spreadBench();  // below
+
+TEST(BenchReport, ShadowMapModesHaveTheirOwnFrontPerBackend) {
+  using Json = nlohmann::ordered_json;
+  const auto run = [](const std::string& mode, double ms, double error, double shadowMs) {
+    const std::string name = "frame/vulkan/lights64-1280x720/" + mode;
+    return Json{{"name", name}, {"run_name", name}, {"run_type", "iteration"}, {"iterations", 3},
+                {"real_time", ms}, {"cpu_time", ms}, {"time_unit", "ms"}, {"err_rmse", error},
+                {"err_max_abs", error}, {"err_psnr_db", 40.0}, {"err_nonfinite_pixels", 0}, {"shadow_pass_ms", shadowMs}};
+  };
+  const Json bench = {{"format", "lightcts-bench"},
+                      {"backends", Json::array({{{"backend", "vulkan"}, {"status", "ran"},
+                                                 {"benchmarks", Json::array({run("shadows-hard-256", 5, 0.02, 1),
+                                                                             run("shadows-bilinear-256", 6, 0.03, 1),
+                                                                             run("shadows-bilinear-1024", 7, 0.01, 3),
+                                                                             run("all-lights", 4, 0.001, 0)})}}})}};
+  const std::string page = benchOverviewHtml(bench);
+  const std::size_t section = page.find("<h2 id=\"shadow-maps\">Shadow maps: resolution and filter</h2>");
+  ASSERT_NE(section, std::string::npos);
+  const std::string shadows = page.substr(section);
+  EXPECT_EQ(frontPoints(shadows), (std::set<std::string>{"vulkan/shadows-hard-256", "vulkan/shadows-bilinear-1024"}));
+  EXPECT_EQ(shadows.find("data-point=\"vulkan/all-lights\""), std::string::npos) << "shadow modes only";
+  EXPECT_NE(shadows.find("<th>shadow pass ms</th>"), std::string::npos);
+  // No shadow modes, no section.
+  EXPECT_EQ(benchOverviewHtml(spreadBench()).find("id=\"shadow-maps\""), std::string::npos);
+}
+
 // A tiny bench.json: a, three repetitions (real 8, 10, 12 ms; CPU 3, 4, 7);
 // b, one repetition; c, Google Benchmark's median and cv aggregates only.
 nlohmann::ordered_json spreadBench() {
