@@ -101,6 +101,24 @@ Vec3 ShadowProjection::offsetReceiver(const Vec3& p, const Vec3& N) const {
   return p + spec.normalBias * N + spec.depthBias * towardLight(p);
 }
 
+namespace {
+
+// A perspective view from the light along f, near = shadow_map.near, far = range.
+ShadowView perspectiveView(const Light& light, const Vec3& r, const Vec3& u, const Vec3& f, double halfWidth) {
+  ShadowView v;
+  v.perspective = true;
+  v.origin = light.position;
+  v.r = r;
+  v.u = u;
+  v.f = f;
+  v.halfWidth = halfWidth;
+  v.nearPlane = light.shadowMap->nearPlane;
+  v.farPlane = light.range;
+  return v;
+}
+
+}  // namespace
+
 ShadowProjection shadowProjection(const Scene& scene, int light) {
   const Light& l = scene.lights[light];
   ShadowProjection p;
@@ -125,31 +143,13 @@ ShadowProjection shadowProjection(const Scene& scene, int light) {
     }
     case LightType::Spot: {
       const LightBasis b = lightBasis(l.direction);
-      ShadowView v;
-      v.perspective = true;
-      v.origin = l.position;
-      v.r = b.r;
-      v.u = b.u;
-      v.f = b.f;
-      v.halfWidth = std::tan(l.spotAngleDeg * std::numbers::pi / 360.0);
-      v.nearPlane = p.spec.nearPlane;
-      v.farPlane = l.range;
-      p.views.push_back(v);
+      p.views.push_back(perspectiveView(l, b.r, b.u, b.f, std::tan(l.spotAngleDeg * std::numbers::pi / 360.0)));
       break;
     }
     case LightType::Point:
       for (int face = 0; face < kCubeFaceCount; ++face) {
         const CubeFaceFrame frame = cubeFaceFrame(face);
-        ShadowView v;
-        v.perspective = true;
-        v.origin = l.position;
-        v.r = frame.sAxis;
-        v.u = frame.tAxis;
-        v.f = frame.axis;
-        v.halfWidth = 1;  // 90 degrees
-        v.nearPlane = p.spec.nearPlane;
-        v.farPlane = l.range;
-        p.views.push_back(v);
+        p.views.push_back(perspectiveView(l, frame.sAxis, frame.tAxis, frame.axis, 1.0));  // 90 degrees
       }
       break;
   }

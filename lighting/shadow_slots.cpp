@@ -2,14 +2,6 @@
 
 namespace lighting {
 
-const ShadowProjection* ShadowSlots::of(int sceneLight) const {
-  if (sceneLight < 0 || sceneLight >= int(slotOfLight.size()) || slotOfLight[sceneLight] < 0) return nullptr;
-  for (const auto* list : {&maps, &cubes})
-    for (const ShadowProjection& p : *list)
-      if (p.light == sceneLight) return &p;
-  return nullptr;
-}
-
 ShadowSlots assignShadowSlots(const Scene& scene, const LightSelection& selection) {
   ShadowSlots slots;
   slots.slotOfLight.assign(scene.lights.size(), -1);

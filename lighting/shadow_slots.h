@@ -25,8 +25,6 @@ struct ShadowSlots {
   // backends report the frame NotSupported with this sentence.
   std::string overflow;
   bool any() const { return !maps.empty() || !cubes.empty(); }
-  // The projection of a scene light's map, or null when it has no slot.
-  const ShadowProjection* of(int sceneLight) const;
 };
 
 ShadowSlots assignShadowSlots(const Scene& scene, const LightSelection& selection);

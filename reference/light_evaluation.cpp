@@ -1,6 +1,7 @@
 #include "reference/light_evaluation.h"
 
 #include "reference/cookie_bound.h"
+#include "reference/shadow_ray.h"
 #include "reference/specular_bound.h"
 #include "reference/tolerance_model.h"
 
@@ -84,7 +85,8 @@ ShadowFactor LightEvaluator::shadowAt(const Prepared& light, const Vec3& p, cons
   ShadowFactor f;
   double s = 1, sLo = 1, sHi = 1;
   if (light.idealShadowLight) {
-    s = sLo = sHi = idealShadow(*idealVisibility_, *light.idealShadowLight, p, N);
+    // SPEC 3.9 `--ideal` is SPEC 3.6's visibility ray (shadow_ray.h).
+    s = sLo = sHi = lightVisibility(*idealVisibility_, *light.idealShadowLight, p, N);
   } else {
     const ShadowLookup look = light.shadowMap->lookup(p, N, {positionError}, filterWeightPrecision_);
     s = look.s;

@@ -2,7 +2,6 @@
 
 #include "lighting/light_space.h"
 #include "reference/parallel_rows.h"
-#include "reference/shadow_ray.h"
 #include "reference/tolerance_model.h"
 
 #include <glm/geometric.hpp>
@@ -445,10 +444,6 @@ imaging::Image ReferenceShadowMap::viewImage(int view) const {
       image.at(i, j, 2) = float(t.hi);
     }
   return image;
-}
-
-double idealShadow(const Bvh& bvh, const Light& light, const Vec3& p, const Vec3& N) {
-  return lightVisibility(bvh, light, p, N);
 }
 
 }  // namespace reference

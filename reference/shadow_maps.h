@@ -78,8 +78,4 @@ class ReferenceShadowMap {
   std::vector<ShadowTexel> texels_;
 };
 
-// SPEC 3.9 `--ideal`: exact visibility, 0 when a ray from p + 1e-3 N toward
-// the light hits any triangle, else 1 (reference/shadow_ray.h's rule).
-double idealShadow(const Bvh& bvh, const lighting::Light& light, const Vec3& p, const Vec3& N);
-
 }  // namespace reference
