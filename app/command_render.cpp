@@ -6,6 +6,7 @@
 #include "backends/expected_driver.h"
 #include "comparison/comparison_report.h"
 #include "conformance/cpu_mutants.h"
+#include "conformance/reference_cache.h"
 #include "conformance/scene_check.h"
 #include "imaging/image_files.h"
 #include "reference/reference_renderer.h"
@@ -67,7 +68,11 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
     if (int status = createBackend(backend, err, renderer); status != kExitSuccess) return status;
     // Every frame of an animated scene unless --frame picks one (SPEC 10:
     // popping-64's kept set is checked per frame).
-    conformance::SceneReferences references(input.prepared);
+    // The references come from the shared cache when another command or
+    // run (ctest's other combinations) computed them already.
+    conformance::SceneReferences references(
+        input.prepared, conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), args.scenePath,
+                                                      input.prepared->scene));
     conformance::CheckOptions options;
     if (args.frameGiven) options.onlyFrame = args.frame;
     options.mutant = backendOptions(backend).variant.mutant;

@@ -1,12 +1,16 @@
-// `lightcts run` (SPEC 8) and the hidden `lightcts worker` it starts.
+// `lightcts run` (SPEC 8), the hidden `lightcts worker` it starts, and
+// `lightcts merge` of its shards (issue 20).
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
+#include "conformance/reference_cache.h"
 #include "runner/suite_worker.h"
 
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace app {
 
@@ -18,6 +22,30 @@ int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::o
       throw InputError(e.what());  // unknown backend or mutant, bad --timeout
     }
   });
+}
+
+int runMergeCommand(const runner::MergeOptions& options, std::ostream& out, std::ostream& err) {
+  return guardCommand(err, [&] {
+    try {
+      return runner::mergeRuns(options, out);
+    } catch (const runner::MergeRefused& e) {
+      throw InputError(std::string("merge: ") + e.what());
+    }
+  });
+}
+
+bool stdoutIsTerminal() { return ::isatty(STDOUT_FILENO) == 1; }
+
+std::string referenceCacheDirectory() { return conformance::defaultReferenceCacheDirectory().string(); }
+
+bool parseShardArgument(const std::string& text, runner::RunOptions& options, std::ostream& err) {
+  try {
+    options.shard = runner::parseShard(text);
+    return true;
+  } catch (const std::invalid_argument& e) {
+    err << "lightcts: run: " << e.what() << "\n";
+    return false;
+  }
 }
 
 int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, std::ostream& err) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "runner/bench_run.h"
+#include "runner/run_merge.h"
 #include "runner/suite_run.h"
 
 #include <iosfwd>
@@ -77,6 +78,17 @@ struct BakeArguments {
   bool noCache = false;  // bake even when the cache holds this bake, and do not store it
 };
 int runBakeCommand(const BakeArguments& args, std::ostream& out, std::ostream& err);
+// `lightcts merge DIR... --out DIR` (runner/run_merge.h): 0 the merged run
+// passes, 1 it has a failure, 2 the folders are not the shards of one run
+// (the reason on stderr, nothing written).
+int runMergeCommand(const runner::MergeOptions& options, std::ostream& out, std::ostream& err);
+// For `run`: whether stdout is a terminal (progress redrawn in place), the
+// reference cache folder (conformance/reference_cache.h; "" when none is
+// known), and --shard I/N into options.shard (false, with the message on
+// `err`, when it is not I/N with 1 <= I <= N).
+bool stdoutIsTerminal();
+std::string referenceCacheDirectory();
+bool parseShardArgument(const std::string& text, runner::RunOptions& options, std::ostream& err);
 // The hidden `lightcts worker` command that `run` starts (runner/suite_worker.h).
 int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, std::ostream& err);
 

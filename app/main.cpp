@@ -102,6 +102,19 @@ int main(int argc, char** argv) {
   runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
   runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
+  // Issue 20 (docs/ci.md): the cores of one machine, the machines of a CI job.
+  runCmd->add_option("--jobs,-j", run.jobs, "Worker processes at once (default: one per core)")
+      ->check(CLI::PositiveNumber);
+  std::string shardText;
+  runCmd->add_option("--shard", shardText, "Run shard I of N (I from 1): a disjoint part of the run, for CI jobs");
+  runCmd->add_option("--timings", run.timingsFile, "An earlier results.json: balance the shards by its test times");
+  runCmd->add_flag("--fresh-references", run.freshReferences,
+                   "Compute every reference in this run (once, shared by its workers), not from the shared cache");
+  // `lightcts merge DIR... --out DIR` (issue 20, docs/ci.md).
+  runner::MergeOptions merge;
+  auto* mergeCmd = cli.add_subcommand("merge", "Merge the shards of one run into one results.json and report");
+  mergeCmd->add_option("dirs", merge.shardDirs, "The shards' --out folders")->required();
+  mergeCmd->add_option("--out", merge.outDir, "Output folder for the merged run")->required();
   // `lightcts run compare OLD NEW [--out DIR]` (issue 16, docs/cli.md).
   std::vector<std::string> runCompareFiles;
   std::string runCompareOut;
@@ -164,8 +177,15 @@ int main(int argc, char** argv) {
     e << "lightcts: run: --out is required\n";
     return app::kExitBadInput;
   }
+  if (*mergeCmd) {
+    for (int i = 0; i < argc; ++i) merge.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return app::runMergeCommand(merge, o, e);
+  }
   if (*runCmd) {
     run.workerExecutable = "/proc/self/exe";
+    run.progressInPlace = app::stdoutIsTerminal();
+    run.referenceCache = app::referenceCacheDirectory();
+    if (!shardText.empty() && !app::parseShardArgument(shardText, run, e)) return app::kExitBadInput;
     for (int i = 0; i < argc; ++i) run.commandLine += (i ? " " : "") + std::string(argv[i]);
     return app::runSuiteCommand(run, o, e);
   }

@@ -2,6 +2,7 @@
 
 #include "conformance/cpu_mutants.h"
 #include "conformance/popping.h"
+#include "conformance/reference_cache.h"
 
 #include <algorithm>
 #include <chrono>
@@ -45,8 +46,33 @@ reference::ReferenceOptions referenceOptionsFor(const lighting::Scene& scene) {
   return options;
 }
 
-SceneReferences::SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared)
-    : prepared_(std::move(prepared)), renderer_(prepared_) {}
+std::optional<ReferenceCaching> referenceCaching(const std::filesystem::path& directory,
+                                                 const std::filesystem::path& sceneFile, const lighting::Scene& scene) {
+  if (directory.empty()) return std::nullopt;
+  return ReferenceCaching{directory, sceneContentDigest(sceneFile, scene)};
+}
+
+SceneReferences::SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared,
+                                 std::optional<ReferenceCaching> caching)
+    : prepared_(std::move(prepared)), caching_(std::move(caching)) {}
+
+const reference::ReferenceRenderer& SceneReferences::renderer() {
+  if (!renderer_) renderer_ = std::make_unique<reference::ReferenceRenderer>(prepared_);
+  return *renderer_;
+}
+
+reference::ReferenceImages SceneReferences::render(int index, const reference::ReferenceOptions& options) {
+  const lighting::Frame& f = frame(index);
+  return timed(referenceMs_, [&] {
+    if (!caching_ || !cacheable(options)) return renderer().render(f, options);
+    bool hit = false;
+    reference::ReferenceImages images =
+        cachedReference(caching_->directory, referenceCacheKey(caching_->sceneDigest, index, options),
+                        [&] { return renderer().render(f, options); }, &hit);
+    cacheHits_ += hit ? 1 : 0;
+    return images;
+  });
+}
 
 const lighting::Frame& SceneReferences::frame(int index) {
   auto it = frames_.find(index);
@@ -56,22 +82,23 @@ const lighting::Frame& SceneReferences::frame(int index) {
 
 const reference::ReferenceImages& SceneReferences::reference(int index, int subTexelBits) {
   // A device that reports fewer bits than the minimum is held to the minimum
-  // (SPEC 7: "2^-4 ... unless the device reports more").
-  const int bits = std::max(subTexelBits, kMinimumSubTexelBits);
+  // (SPEC 7: "2^-4 ... unless the device reports more"). A scene without a
+  // filtered texture has one reference whatever the bits: the minimum's.
+  const bool filtered = reference::readsFilteredTextures(*prepared_);
+  const int bits = filtered ? std::max(subTexelBits, kMinimumSubTexelBits) : kMinimumSubTexelBits;
   const std::pair<int, int> key{index, bits};
   auto it = references_.find(key);
   if (it == references_.end()) {
-    const lighting::Frame& f = frame(index);
     reference::ReferenceOptions options = referenceOptionsFor(prepared_->scene);
     options.filterWeightPrecision = std::ldexp(1.0, -bits);
-    it = references_.emplace(key, timed(referenceMs_, [&] { return renderer_.render(f, options); })).first;
+    it = references_.emplace(key, render(index, options)).first;
   }
   return it->second;
 }
 
 std::vector<imaging::Image> SceneReferences::shadowMapImages(int index) {
   const lighting::Frame& f = frame(index);
-  const auto maps = renderer_.shadowMaps(f);
+  const auto maps = renderer().shadowMaps(f);
   std::vector<imaging::Image> images;
   for (const auto* list : {&f.shadows.maps, &f.shadows.cubes})
     for (const lighting::ShadowProjection& projection : *list)
@@ -82,10 +109,9 @@ std::vector<imaging::Image> SceneReferences::shadowMapImages(int index) {
 const reference::ReferenceImages& SceneReferences::ideal(int index) {
   auto it = ideals_.find(index);
   if (it == ideals_.end()) {
-    const lighting::Frame& f = frame(index);
     reference::ReferenceOptions options;
     options.ideal = true;
-    it = ideals_.emplace(index, timed(referenceMs_, [&] { return renderer_.render(f, options); })).first;
+    it = ideals_.emplace(index, render(index, options)).first;
   }
   return it->second;
 }

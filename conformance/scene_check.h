@@ -11,6 +11,7 @@
 #include "reference/reference_renderer.h"
 #include "shaders/shader_variant.h"
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -23,11 +24,25 @@ namespace conformance {
 // one with baked lights in real time. `lightcts reference` applies the same rule.
 reference::ReferenceOptions referenceOptionsFor(const lighting::Scene& scene);
 
+// Where SceneReferences keeps its references between processes
+// (reference_cache.h): the cache folder and the scene's content digest.
+struct ReferenceCaching {
+  std::filesystem::path directory;
+  std::string sceneDigest;  // sceneContentDigest of the scene file
+};
+
+// The caching of `sceneFile`'s references in `directory` (its content digest
+// taken now); none when `directory` is empty.
+std::optional<ReferenceCaching> referenceCaching(const std::filesystem::path& directory,
+                                                 const std::filesystem::path& sceneFile, const lighting::Scene& scene);
+
 // The references of one scene, rendered on first use and kept: a worker that
-// renders the model and then every mutant pays for each reference once.
+// renders the model and then every mutant pays for each reference once; with
+// `caching`, every worker of a run and every later run share them on disk.
 class SceneReferences {
  public:
-  explicit SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared);
+  explicit SceneReferences(std::shared_ptr<const lighting::PreparedScene> prepared,
+                           std::optional<ReferenceCaching> caching = std::nullopt);
   const std::shared_ptr<const lighting::PreparedScene>& prepared() const { return prepared_; }
   const lighting::Frame& frame(int index);
   // With referenceOptionsFor(scene) and SPEC 7's filter weights exact to
@@ -38,18 +53,27 @@ class SceneReferences {
   // SPEC 6 --ideal, for the popping score; it keeps the lightmaps whatever
   // `expect.against` says, so the baked part cancels and only budgets remain.
   const reference::ReferenceImages& ideal(int frame);
-  double referenceMilliseconds() const { return referenceMs_; }  // time spent rendering references so far
+  // Time spent on references so far: rendering them, or reading them from the cache.
+  double referenceMilliseconds() const { return referenceMs_; }
+  int cacheHits() const { return cacheHits_; }  // references read from the cache so far
   // SPEC 3.9's evidence: the reference's maps of `frame`, one image per view
   // in lighting::shadowPassViews order (ReferenceShadowMap::viewImage).
   std::vector<imaging::Image> shadowMapImages(int frame);
 
  private:
+  // Built on first use: a worker whose references all come from the cache
+  // never builds the scene's BVH.
+  const reference::ReferenceRenderer& renderer();
+  reference::ReferenceImages render(int frame, const reference::ReferenceOptions& options);
+
   std::shared_ptr<const lighting::PreparedScene> prepared_;
-  reference::ReferenceRenderer renderer_;
+  std::optional<ReferenceCaching> caching_;
+  std::unique_ptr<reference::ReferenceRenderer> renderer_;
   std::map<int, lighting::Frame> frames_;
   std::map<std::pair<int, int>, reference::ReferenceImages> references_;  // by frame and sub-texel bits
   std::map<int, reference::ReferenceImages> ideals_;
   double referenceMs_ = 0;
+  int cacheHits_ = 0;
 };
 
 // Wall-clock milliseconds per stage, summed over the frames checked.

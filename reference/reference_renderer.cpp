@@ -305,6 +305,13 @@ constexpr int kEdgeProbes = 8;
 
 }  // namespace
 
+bool readsFilteredTextures(const lighting::PreparedScene& prepared) {
+  if (prepared.needsBake()) return true;
+  for (const lighting::Light& light : prepared.scene.lights)
+    if (light.cookie || light.shadowMap) return true;
+  return false;
+}
+
 ReferenceRenderer::ReferenceRenderer(std::shared_ptr<const PreparedScene> prepared)
     : prepared_(std::move(prepared)), world_(buildWorldTriangles(*prepared_)), bvh_(world_) {}
 

@@ -69,6 +69,13 @@ struct ReferenceImages {
   imaging::Image shadowInterval;
 };
 
+// Whether ReferenceOptions::filterWeightPrecision can change `prepared`'s
+// references: only a filtered texture reads it (lightmaps and shadow masks,
+// cookies, shadow maps). For any other scene every device's sub-texel
+// precision gives the same reference, so one is rendered for all
+// (conformance::SceneReferences, the reference cache).
+bool readsFilteredTextures(const lighting::PreparedScene& prepared);
+
 // Built once per scene (world triangles and BVH), then renders any frame of it.
 class ReferenceRenderer {
  public:

@@ -13,6 +13,7 @@
 #include "reports/result_fields.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -31,6 +32,7 @@ svg.plot { max-width: 100%; height: auto; border: 1px solid #ddd; display: block
 tr.front td:first-child, tr.front td:nth-child(2) { font-weight: bold; }
 tr.broken td { background: #fee; }
 .err { color: #b00; } .note { color: #555; font-size: .9em; }
+.warn { background: #fff3cd; border: 1px solid #e0a800; padding: .5em; }
 )";
 
 std::string pageLink(const std::string& backend) {
@@ -53,6 +55,20 @@ void metaRow(std::ostream& out, const std::string& key, const std::string& value
   out << "<dt>" << escapeText(key) << "</dt><dd>" << escapeText(value) << "</dd>\n";
 }
 
+// The warning of a run whose machine changed under it (issue 20): the two
+// calibrations differ by more than kPeakDriftLimit, so its times and limits
+// are not comparable with a quiet run's. Computed from the two rates, not
+// read from peak_drift, so a hand-edited or older file cannot hide it.
+void peakDriftWarning(std::ostream& out, const Json& bench) {
+  const std::optional<PeakDrift> drift = peakDriftOf(bench);
+  if (!drift || !drift->flagged) return;
+  out << "<p class=\"warn\" id=\"peak-drift\"><strong>Loaded machine:</strong> the peak-rate calibration before "
+         "the timed runs and the one after them differ by "
+      << fmt(100 * drift->difference, 3) << "% (more than " << fmt(100 * kPeakDriftLimit, 3)
+      << "%, as |after &minus; before| / the smaller). Something else ran during this benchmark; its times and "
+         "physical limits are not comparable with a quiet run's.</p>\n";
+}
+
 void runMeta(std::ostream& out, const BenchModel& m) {
   const Json& b = m.bench;
   const Json& machine = objectField(b, "machine");
@@ -73,7 +89,10 @@ void runMeta(std::ostream& out, const BenchModel& m) {
     if (const auto k = textField(peak, "kernel"); !k.empty()) text += " (" + k + ")";
     metaRow(out, "peak rate", text);
   }
+  if (const auto g = numberField(objectField(b, "peak_after"), "gflops"))
+    metaRow(out, "peak rate after", fmt(*g) + " GFLOP/s (calibrated again after the timed runs)");
   out << "</dl>\n";
+  peakDriftWarning(out, b);
 }
 
 const Json& backendJson(const Json& bench, const std::string& backend) {
@@ -190,6 +209,20 @@ std::string benchBackendHtml(const Json& bench, const std::string& backend) {
   tablesByKind(out, mine);
   html::pageEnd(out);
   return out.str();
+}
+
+std::optional<PeakDrift> peakDrift(std::optional<double> beforeGflops, std::optional<double> afterGflops) {
+  if (!beforeGflops || !afterGflops || !(*beforeGflops > 0) || !(*afterGflops > 0)) return std::nullopt;
+  PeakDrift drift;
+  drift.difference = std::abs(*afterGflops - *beforeGflops) / std::min(*beforeGflops, *afterGflops);
+  drift.flagged = drift.difference > kPeakDriftLimit;
+  return drift;
+}
+
+std::optional<PeakDrift> peakDriftOf(const Json& bench) {
+  if (!bench.is_object()) return std::nullopt;
+  return peakDrift(numberField(objectField(bench, "peak"), "gflops"),
+                   numberField(objectField(bench, "peak_after"), "gflops"));
 }
 
 void writeBenchReport(const Json& bench, const fs::path& outDir) {

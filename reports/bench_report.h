@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,5 +36,21 @@ std::string benchPageFile(const std::string& backend);
 // other point is at least as fast and at least as accurate and strictly
 // better in one of the two. Equal points are all on the front.
 std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points);
+
+// The peak-rate calibration run before and after the timed runs (issue 20):
+// the machine's load can swing it 4x, so a run whose two calibrations differ
+// was timed on a machine that changed under it. `difference` is
+// |after - before| / min(before, after), symmetric in the two and never
+// below the plain relative change; `flagged` when it exceeds kPeakDriftLimit
+// (0.2: 100 against 125 is 0.25, flagged; 100 against 115 is 0.15, not).
+inline constexpr double kPeakDriftLimit = 0.2;
+struct PeakDrift {
+  double difference = 0;
+  bool flagged = false;
+};
+// nullopt when either rate is missing or not positive (no comparison).
+std::optional<PeakDrift> peakDrift(std::optional<double> beforeGflops, std::optional<double> afterGflops);
+// The same from bench.json's "peak" and "peak_after" objects ("gflops").
+std::optional<PeakDrift> peakDriftOf(const nlohmann::ordered_json& bench);
 
 }  // namespace reports

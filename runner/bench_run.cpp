@@ -12,7 +12,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -164,6 +166,81 @@ void addFlatArrays(Json& bench) {
   bench["benchmarks"] = std::move(flat);
 }
 
+// One run of the peak-rate kernel (`lightcts bench-worker peak`) into
+// raw/<name>.json; null when it failed (said on `err`).
+Json calibratePeak(const BenchOptions& options, const fs::path& rawDir, const std::string& name, std::ostream& out,
+                   std::ostream& err) {
+  out << "bench: calibrating the peak rate (" << name << ")" << std::endl;
+  const ProcessOutcome run = runBenchProcess(options, {"peak"}, rawDir / (name + ".json"), rawDir / (name + ".log"));
+  if (run.ok && run.output.contains("peak") && run.output["peak"].contains("gflops")) {
+    out << "bench: " << name << " " << run.output["peak"]["gflops"].get<double>() << " GFLOP/s" << std::endl;
+    return run.output["peak"];
+  }
+  err << "lightcts: bench: the peak-rate calibration (" << name << ") failed (" << run.how << ")\n";
+  return nullptr;
+}
+
+// bench.json's "peak_drift" (docs/bench-format.md): the two calibrations
+// compared by reports::peakDrift, which the pages flag; null without both.
+Json peakDriftJson(const Json& before, const Json& after) {
+  const auto rate = [](const Json& peak) -> std::optional<double> {
+    if (!peak.is_object() || !peak.contains("gflops") || !peak["gflops"].is_number()) return std::nullopt;
+    return peak["gflops"].get<double>();
+  };
+  const std::optional<reports::PeakDrift> drift = reports::peakDrift(rate(before), rate(after));
+  if (!drift) return nullptr;
+  return {{"ratio", *rate(after) / *rate(before)},
+          {"difference", drift->difference},
+          {"limit", reports::kPeakDriftLimit},
+          {"flagged", drift->flagged}};
+}
+
+// What one frame-benchmark process of a combination left: its bench.json
+// entry and whether it failed.
+struct BackendRun {
+  Json entry;
+  bool ran = false, failed = false;
+  std::string summary;  // the line said on `out` when it ends
+};
+
+BackendRun runBackend(const BenchOptions& options, const BackendCombination& c, const fs::path& rawDir,
+                      const std::vector<std::string>& common) {
+  const auto start = Clock::now();
+  std::vector<std::string> args = {"frame", "--backend=" + c.backend, "--scenes=" + options.scenesDir};
+  if (!c.driver.empty()) args.push_back("--driver=" + c.driver);
+  args.insert(args.end(), common.begin(), common.end());
+  const ProcessOutcome run = runBenchProcess(options, args, rawDir / (c.suffix + ".json"), rawDir / (c.suffix + ".log"));
+  const Json benchmarks = run.output.is_object() ? run.output.value("benchmarks", Json::array()) : Json::array();
+  const Json context = run.output.is_object() ? run.output.value("context", Json::object()) : Json::object();
+  comparison::BackendStatus status = comparison::BackendStatus::Ran;
+  std::string message;
+  BackendRun result;
+  // Exit 3 (or nothing measured): the backend or driver is not here.
+  if (run.exitStatus == 3 || (run.ok && benchmarks.empty())) {
+    status = comparison::BackendStatus::NotSupported;
+    std::ifstream log(rawDir / (c.suffix + ".log"));
+    std::getline(log, message);
+  } else if (!run.ok) {
+    status = comparison::BackendStatus::Error;
+    message = "the benchmark process ended with " + run.how + "; see raw/" + c.suffix + ".log";
+    result.failed = true;
+  }
+  result.ran = status == comparison::BackendStatus::Ran;
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::ostringstream line;
+  line << "bench: " << c.suffix << ": " << status << (message.empty() ? "" : " (" + message + ")") << ", "
+       << benchmarks.size() << " entries, " << std::fixed << std::setprecision(1) << seconds << " s";
+  result.summary = line.str();
+  result.entry = {{"backend", c.suffix},
+                  {"status", comparison::backendStatusName(status)},
+                  {"message", message},
+                  {"device", deviceFromContext(context, c.suffix)},
+                  {"wall_s", seconds},
+                  {"context", context},
+                  {"benchmarks", benchmarks}};
+  return result;
+}
+
 }  // namespace
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
@@ -179,69 +256,74 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   fs::create_directories(rawDir);
   const std::vector<std::string> quick = options.quick ? std::vector<std::string>{"--quick"} : std::vector<std::string>{};
 
-  // The calibration first, on a quiet machine: every later limit depends on it.
-  out << "bench: calibrating the peak rate" << std::endl;
-  const ProcessOutcome peakRun = runBenchProcess(options, {"peak"}, rawDir / "peak.json", rawDir / "peak.log");
-  Json peak = nullptr;
-  if (peakRun.ok && peakRun.output.contains("peak")) peak = peakRun.output["peak"];
-  std::string peakArg;
+  // The calibration first, on a quiet machine: every later limit depends on
+  // it. It runs again after the timed runs (issue 20): a machine loaded
+  // during the run shows as a difference between the two, which the pages flag.
+  const Json peak = calibratePeak(options, rawDir, "peak", out, err);
+  std::vector<std::string> common;  // what every frame process gets
   if (!peak.is_null()) {
     std::ostringstream text;
     text << std::setprecision(17) << peak["gflops"].get<double>();
-    peakArg = "--peak_gflops=" + text.str();
-    out << "bench: peak " << peak["gflops"].get<double>() << " GFLOP/s" << std::endl;
+    common.push_back("--peak_gflops=" + text.str());
   } else {
-    err << "lightcts: bench: the peak-rate calibration failed (" << peakRun.how << "); no physical limit\n";
+    err << "lightcts: bench: no physical limit without the peak rate\n";
   }
+  common.insert(common.end(), quick.begin(), quick.end());
+  // The ideal references (untimed) are the same for every combination's
+  // scenes: the first process to need one renders it, the others read it.
+  common.push_back("--ideal_cache=" + (rawDir / "ideal").string());
 
-  out << "bench: CPU preparation" << std::endl;
   std::vector<std::string> prepareArgs = {"prepare"};
   prepareArgs.insert(prepareArgs.end(), quick.begin(), quick.end());
-  const ProcessOutcome prepareRun =
-      runBenchProcess(options, prepareArgs, rawDir / "prepare.json", rawDir / "prepare.log");
-  Json prepare = prepareRun.output.is_object() ? Json{{"context", prepareRun.output.value("context", Json::object())},
-                                                      {"benchmarks", prepareRun.output.value("benchmarks", Json::array())}}
-                                                : Json(nullptr);
+  const auto runPrepare = [&] {
+    return runBenchProcess(options, prepareArgs, rawDir / "prepare.json", rawDir / "prepare.log");
+  };
+
+  ProcessOutcome prepareRun;
+  std::vector<BackendRun> runs;
+  if (options.quick) {
+    // --quick proves that every mode runs, it measures nothing: the CPU
+    // preparation and every combination run at once, so the smoke run takes
+    // the slowest process's time, not their sum.
+    out << "bench: CPU preparation and " << combinations.size() << " combinations at once (--quick)" << std::endl;
+    auto prepareJob = std::async(std::launch::async, runPrepare);
+    std::vector<std::future<BackendRun>> jobs;
+    for (const BackendCombination& c : combinations)
+      jobs.push_back(std::async(std::launch::async, [&, c] { return runBackend(options, c, rawDir, common); }));
+    for (auto& job : jobs) runs.push_back(job.get());
+    prepareRun = prepareJob.get();
+  } else {
+    // Timed runs one after the other: two processes at once on the same
+    // cores would time each other.
+    out << "bench: CPU preparation" << std::endl;
+    prepareRun = runPrepare();
+    for (const BackendCombination& c : combinations) {
+      out << "bench: " << c.suffix << std::endl;
+      runs.push_back(runBackend(options, c, rawDir, common));
+      out << runs.back().summary << std::endl;
+    }
+  }
+  if (options.quick)
+    for (const BackendRun& r : runs) out << r.summary << std::endl;
+  const Json prepare = prepareRun.output.is_object()
+                           ? Json{{"context", prepareRun.output.value("context", Json::object())},
+                                  {"benchmarks", prepareRun.output.value("benchmarks", Json::array())}}
+                           : Json(nullptr);
   bool failed = !prepareRun.ok;
   if (!prepareRun.ok) err << "lightcts: bench: the CPU preparation benchmarks failed (" << prepareRun.how << ")\n";
-
   Json backends = Json::array();
   bool anyRan = false;
-  for (const BackendCombination& c : combinations) {
-    out << "bench: " << c.suffix << std::endl;
-    const auto start = Clock::now();
-    std::vector<std::string> args = {"frame", "--backend=" + c.backend, "--scenes=" + options.scenesDir};
-    if (!c.driver.empty()) args.push_back("--driver=" + c.driver);
-    if (!peakArg.empty()) args.push_back(peakArg);
-    args.insert(args.end(), quick.begin(), quick.end());
-    const ProcessOutcome run = runBenchProcess(options, args, rawDir / (c.suffix + ".json"), rawDir / (c.suffix + ".log"));
-    const Json benchmarks = run.output.is_object() ? run.output.value("benchmarks", Json::array()) : Json::array();
-    const Json context = run.output.is_object() ? run.output.value("context", Json::object()) : Json::object();
-    comparison::BackendStatus status = comparison::BackendStatus::Ran;
-    std::string message;
-    // Exit 3 (or nothing measured): the backend or driver is not here.
-    if (run.exitStatus == 3 || (run.ok && benchmarks.empty())) {
-      status = comparison::BackendStatus::NotSupported;
-      std::ifstream log(rawDir / (c.suffix + ".log"));
-      std::getline(log, message);
-    } else if (!run.ok) {
-      status = comparison::BackendStatus::Error;
-      message = "the benchmark process ended with " + run.how + "; see raw/" + c.suffix + ".log";
-      failed = true;
-    }
-    anyRan = anyRan || status == comparison::BackendStatus::Ran;
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    out << "bench: " << c.suffix << ": " << status << (message.empty() ? "" : " (" + message + ")") << ", "
-        << benchmarks.size() << " entries, " << std::fixed << std::setprecision(1) << seconds << " s"
-        << std::defaultfloat << std::endl;
-    backends.push_back({{"backend", c.suffix},
-                        {"status", comparison::backendStatusName(status)},
-                        {"message", message},
-                        {"device", deviceFromContext(context, c.suffix)},
-                        {"wall_s", seconds},
-                        {"context", context},
-                        {"benchmarks", benchmarks}});
+  for (BackendRun& r : runs) {
+    anyRan = anyRan || r.ran;
+    failed = failed || r.failed;
+    backends.push_back(std::move(r.entry));
   }
+  const Json peakAfter = calibratePeak(options, rawDir, "peak_after", out, err);
+  const Json drift = peakDriftJson(peak, peakAfter);
+  if (drift.is_object() && drift["flagged"].get<bool>())
+    err << "lightcts: bench: the peak rate changed by " << std::fixed << std::setprecision(0)
+        << 100 * drift["difference"].get<double>() << std::defaultfloat
+        << "% during the run (a loaded machine); the pages flag it\n";
 
   Json bench = {{"format", "lightcts-bench"},
                 {"version", 1},
@@ -252,6 +334,8 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
                 {"quick", options.quick},  // a smoke test, not a measurement
                 {"machine", machineJson()},
                 {"peak", peak},
+                {"peak_after", peakAfter},
+                {"peak_drift", drift},
                 {"backends", backends},
                 {"prepare", prepare}};
   addFlatArrays(bench);

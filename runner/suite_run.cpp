@@ -4,14 +4,13 @@
 #include "comparison/verdict.h"
 #include "conformance/scene_catalogue.h"
 #include "lighting/scene_loader.h"
-#include "reports/csv_writer.h"
-#include "reports/html_report.h"
-#include "reports/junit_writer.h"
 #include "runner/expected_failures.h"
+#include "runner/part_run.h"
+#include "runner/part_scheduler.h"
 #include "runner/run_metadata.h"
-#include "imaging/atomic_file.h"
+#include "runner/run_progress.h"
+#include "runner/run_results.h"
 #include "runner/worker_plan.h"
-#include "runner/worker_process.h"
 #include "shaders/shader_variant.h"
 
 #include <nlohmann/json.hpp>
@@ -25,6 +24,7 @@
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace runner {
 namespace {
@@ -60,129 +60,6 @@ std::vector<std::string> mutantsToRun(const RunOptions& options) {
   std::vector<std::string> all;
   for (const shaders::MutantName& m : shaders::mutantNames()) all.emplace_back(m.name);
   return all;
-}
-
-std::string lastLines(const fs::path& file, int count) {
-  std::ifstream in(file);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  std::string text;
-  for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - count : 0; i < lines.size(); ++i)
-    text += lines[i] + "\n";
-  return text;
-}
-
-// What one combination's workers said: the device, and a result per task.
-struct CombinationOutcome {
-  BackendStatus status = BackendStatus::Ran;
-  std::string message;
-  Json device = nullptr;
-  std::vector<Json> results;  // one per task, in plan order
-  double wallSeconds = 0;
-};
-
-Json abnormalResult(const WorkerTask& task, Verdict verdict, const std::string& message) {
-  return {{"test", task.test},       {"raw_verdict", comparison::verdictName(verdict)},
-          {"message", message},      {"metrics", nullptr},
-          {"frames", Json::array()}, {"popping_score", nullptr},
-          {"timings_ms", nullptr},   {"evidence", nullptr}};
-}
-
-// Runs the plan in as many workers as it takes: a worker that dies or hangs
-// costs its current test (Crash or Timeout) and a new worker picks up at the
-// next one. The plan and the workers' stderr go to logs/<fileStem>.plan.json
-// and logs/<fileStem>.log (the suffix; <suffix>.retry-N for a retry).
-CombinationOutcome runCombination(const WorkerPlan& plan, const RunOptions& options, const fs::path& logsDir,
-                                  const std::string& fileStem, std::ostream& out) {
-  CombinationOutcome outcome;
-  const auto start = Clock::now();
-  const fs::path planFile = logsDir / (fileStem + ".plan.json");
-  imaging::writeFileAtomically(planFile, planToJson(plan).dump(1) + "\n");
-  const fs::path logFile = logsDir / (fileStem + ".log");
-  fs::remove(logFile);  // the workers append; an earlier run's lines are not this run's
-  const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeoutSeconds * 1000));
-
-  std::size_t next = 0;
-  while (next < plan.tasks.size()) {
-    WorkerProcess worker({options.workerExecutable, "worker", "--plan", planFile.string(), "--start",
-                          std::to_string(next)},
-                         logFile.string());
-    std::string line;
-    bool stop = false;
-    bool gotResult = false;  // this worker reported at least one test
-    bool backendUp = false;  // this worker said "device": its backend was created
-    for (;;) {
-      const auto status = worker.readLine(timeout, line);
-      // A worker that dies or hangs before its backend is up would do the
-      // same for every task: the backend is an error, and the run moves on.
-      if (status != WorkerProcess::ReadStatus::Line && !backendUp) {
-        const bool hung = status == WorkerProcess::ReadStatus::TimedOut;
-        const std::string how = worker.finish(hung);
-        outcome.status = BackendStatus::Error;
-        outcome.message = std::string(hung ? "the backend did not start within the timeout" : "the worker ended") +
-                          " before its backend was up (" + how + "); its last output:\n" + lastLines(logFile, 8);
-        for (; next < plan.tasks.size(); ++next)
-          outcome.results.push_back(
-              abnormalResult(plan.tasks[next], hung ? Verdict::Timeout : Verdict::Crash, outcome.message));
-        break;
-      }
-      if (status == WorkerProcess::ReadStatus::TimedOut) {
-        const std::string how = worker.finish(true);
-        const WorkerTask& task = plan.tasks[next];
-        outcome.results.push_back(abnormalResult(task, Verdict::Timeout,
-                                                 "no result within " + std::to_string(options.timeoutSeconds) +
-                                                     " s; worker " + how));
-        out << "  " << Verdict::Timeout << " " << task.test << "\n";
-        ++next;
-        break;
-      }
-      if (status == WorkerProcess::ReadStatus::Closed) {
-        const std::string how = worker.finish(false);
-        // Status 4 after a test's result: the worker reported a driver error
-        // and quit, so that a new one starts on a fresh device. No test is lost.
-        if (worker.exitStatus() == 4 && gotResult) break;
-        if (next < plan.tasks.size()) {
-          const WorkerTask& task = plan.tasks[next];
-          outcome.results.push_back(abnormalResult(
-              task, Verdict::Crash, "the worker ended during this test (" + how + "); its last output:\n" +
-                                        lastLines(logFile, 8)));
-          out << "  " << Verdict::Crash << " " << task.test << " (" << how << ")\n";
-          ++next;
-        }
-        break;
-      }
-      Json event;
-      try {
-        event = Json::parse(line);
-      } catch (const Json::parse_error&) {
-        continue;  // a driver that prints on stdout; the protocol lines are JSON
-      }
-      const std::string kind = event.value("kind", "");
-      if (kind == "device") {
-        outcome.device = event["device"];
-        backendUp = true;
-      } else if (kind == "backend_unavailable" || kind == "backend_error") {
-        // A backend that ran before and is gone now is an error, not a skip.
-        const bool skip = kind == "backend_unavailable" && outcome.device.is_null();
-        outcome.status = skip ? BackendStatus::NotSupported : BackendStatus::Error;
-        outcome.message = event.value("message", "");
-        const Verdict verdict = skip ? Verdict::NotSupported : Verdict::Crash;
-        for (; next < plan.tasks.size(); ++next)
-          outcome.results.push_back(abnormalResult(plan.tasks[next], verdict, outcome.message));
-        stop = true;
-        break;
-      } else if (kind == "result" && event.value("index", -1) == int(next)) {
-        event.erase("kind");
-        event.erase("index");
-        outcome.results.push_back(std::move(event));
-        ++next;
-        gotResult = true;
-      }
-    }
-    if (stop) break;
-  }
-  outcome.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return outcome;
 }
 
 // A worker's raw verdict. Workers write only verdictName's words; a result
@@ -227,16 +104,11 @@ struct Attempt {
   std::string log;  // relative to --out: logs/<suffix>.log, logs/<suffix>.retry-N.log
 };
 
-struct MutantOutcome {
-  MutantStatus status;
-  Json record;
-};
-
 // A mutant is killed on a backend when at least one scene fails with it that
 // passes without it (`cleanVerdicts`: the model's raw verdict per test; with
 // --mutants-only it is empty and every failing scene counts).
-MutantOutcome mutantRecord(const std::string& mutant, const std::string& suffix, BackendStatus backendStatus,
-                           const std::vector<Json>& results, const std::map<std::string, Verdict>& cleanVerdicts) {
+Json mutantRecord(const std::string& mutant, const std::string& suffix, BackendStatus backendStatus,
+                  const std::vector<Json>& results, const std::map<std::string, Verdict>& cleanVerdicts) {
   Json killedBy = Json::array();
   Json evidence = nullptr;
   bool crashed = false, timedOut = false;
@@ -262,23 +134,12 @@ MutantOutcome mutantRecord(const std::string& mutant, const std::string& suffix,
   std::string what;
   for (const shaders::MutantName& m : shaders::mutantNames())
     if (m.name == mutant) what = m.what;
-  return {status, {{"mutant", mutant},
-                   {"what", what},
-                   {"backend", suffix},
-                   {"status", comparison::mutantStatusName(status)},
-                   {"killed_by", killedBy},
-                   {"evidence", evidence}}};
-}
-
-// results.json's "counts" of one backend, in report order.
-Json countsJson(const std::map<Verdict, int>& counted) {
-  Json counts = Json::object();
-  for (const Verdict verdict : comparison::kAllVerdicts) {
-    const auto it = counted.find(verdict);
-    const int n = it == counted.end() ? 0 : it->second;
-    if (n > 0 || comparison::listedWhenZero(verdict)) counts[std::string(comparison::verdictName(verdict))] = n;
-  }
-  return counts;
+  return {{"mutant", mutant},
+          {"what", what},
+          {"backend", suffix},
+          {"status", comparison::mutantStatusName(status)},
+          {"killed_by", killedBy},
+          {"evidence", evidence}};
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -291,6 +152,77 @@ std::string formatMs(double ms) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(ms < 10 ? 2 : 0) << ms << " ms";
   return text.str();
+}
+
+// What a combination's parts said together: the device of the first part
+// that has one; Error when a part broke, or when some part found the backend
+// absent after another had it (a backend gone mid-run); NotSupported only
+// when no part found it.
+struct CombinationOutcome {
+  BackendStatus status = BackendStatus::Ran;
+  std::string message;
+  Json device = nullptr;
+  std::vector<Json> results;  // one per task, in part order
+  double workerSeconds = 0;   // the parts' worker time, summed (they may overlap)
+};
+
+CombinationOutcome combineParts(const std::vector<const PartOutcome*>& parts) {
+  CombinationOutcome outcome;
+  bool anyRan = false, anyAbsent = false;
+  for (const PartOutcome* part : parts) {
+    if (outcome.device.is_null()) outcome.device = part->device;
+    outcome.workerSeconds += part->wallSeconds;
+    outcome.results.insert(outcome.results.end(), part->results.begin(), part->results.end());
+    anyRan = anyRan || part->status == BackendStatus::Ran;
+    anyAbsent = anyAbsent || part->status == BackendStatus::NotSupported;
+    if (part->status == BackendStatus::Error && outcome.status != BackendStatus::Error) {
+      outcome.status = BackendStatus::Error;
+      outcome.message = part->message;
+    }
+  }
+  if (outcome.status != BackendStatus::Error && anyAbsent) {
+    outcome.status = anyRan ? BackendStatus::Error : BackendStatus::NotSupported;
+    for (const PartOutcome* part : parts)
+      if (part->status == BackendStatus::NotSupported) {
+        outcome.message = (anyRan ? "the backend went away during the run: " : "") + part->message;
+        break;
+      }
+  }
+  return outcome;
+}
+
+// logs/<suffix>.log: every part's log, in part order, under a line naming
+// the part; the part logs go once copied.
+void concatenateLogs(const fs::path& logsDir, const std::string& suffix, int parts) {
+  std::ofstream all(logsDir / (suffix + ".log"), std::ios::trunc);
+  for (int k = 0; k < parts; ++k) {
+    const fs::path partLog = logsDir / (suffix + ".part-" + std::to_string(k) + ".log");
+    std::ifstream in(partLog);
+    all << "== part " << k << " (plan: logs/" << suffix << ".part-" << k << ".plan.json)\n";
+    if (in) all << in.rdbuf();
+    in.close();
+    fs::remove(partLog);
+  }
+}
+
+// Every task's stage times summed, the mutation check's included (results.json
+// keeps per-test times of the model's tests only): where a backend's worker
+// time went, references against the rest.
+Json taskMilliseconds(const std::vector<Json>& results) {
+  double reference = 0, total = 0;
+  int timed = 0;
+  for (const Json& r : results) {
+    if (!r.contains("timings_ms") || !r["timings_ms"].is_object()) continue;
+    reference += r["timings_ms"].value("reference", 0.0);
+    total += r["timings_ms"].value("total", 0.0);
+    ++timed;
+  }
+  return {{"tasks", timed}, {"reference", reference}, {"total", total}};
+}
+
+int resolvedJobs(int jobs) {
+  if (jobs > 0) return jobs;
+  return int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 }  // namespace
@@ -311,74 +243,207 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const std::vector<std::string> mutants = mutantsToRun(options);
   if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
   if (options.flakeRetries < 0) throw std::invalid_argument("--flake-retries must be 0 or more");
+  if (options.jobs < 0) throw std::invalid_argument("--jobs must be 1 or more (0: one per core)");
   if (options.mutantsOnly && mutants.empty())
     throw std::invalid_argument("nothing to run: --mutants-only with --no-mutants");
+  if (!options.timingsFile.empty() && !options.shard)
+    throw std::invalid_argument("--timings balances shards: it needs --shard I/N");
+  const std::optional<Timings> timings =
+      options.timingsFile.empty() ? std::nullopt : std::optional<Timings>(loadTimings(options.timingsFile));
+  const int jobs = resolvedJobs(options.jobs);
+
+  // The run's units (one scene on one combination), and this shard's share.
+  std::vector<RunUnit> allUnits;
+  for (std::size_t c = 0; c < combinations.size(); ++c)
+    for (const CatalogueEntry& scene : catalogue) {
+      const std::string test = scene.file.caseName() + "." + combinations[c].suffix;
+      RunUnit unit{c, test, {}};
+      if (!options.mutantsOnly) unit.tasks.push_back({test, scene.file.path.string(), "none"});
+      for (const std::string& mutant : mutants) unit.tasks.push_back({test, scene.file.path.string(), mutant});
+      allUnits.push_back(std::move(unit));
+    }
+  std::vector<RunUnit> units;
+  Json shardJson = nullptr;
+  if (options.shard) {
+    const std::vector<int> shardOf = assignShards(unitCosts(allUnits, timings), options.shard->total);
+    std::size_t runTests = 0;
+    for (std::size_t u = 0; u < allUnits.size(); ++u) {
+      runTests += options.mutantsOnly ? 0 : 1;
+      if (shardOf[u] == options.shard->index - 1) units.push_back(allUnits[u]);
+    }
+    shardJson = {{"index", options.shard->index},
+                 {"total", options.shard->total},
+                 {"partition", partitionDigest(allUnits, shardOf, options.shard->total)},
+                 {"balanced_by", timings ? "timings" : "test count"},
+                 {"timings_file", options.timingsFile},
+                 {"tests_in_run", runTests},
+                 {"units", units.size()},
+                 {"units_in_run", allUnits.size()}};
+  } else {
+    units = std::move(allUnits);
+  }
+  std::vector<fs::path> sceneFiles;
+  for (const CatalogueEntry& scene : catalogue) sceneFiles.push_back(scene.file.path);
+  const std::string sceneDigest = scenesDigest(sceneFiles, options.scenesDir);
 
   const fs::path outDir(options.outDir);
   const fs::path logsDir = outDir / "logs";
   fs::create_directories(logsDir);
-  // Evidence of an earlier run in the same folder would be mistaken for this one's.
-  for (const char* stale : {"evidence", "mutants", "report"}) fs::remove_all(outDir / stale);
-  for (const char* stale : {"results.json", "junit.xml", "results.csv", "failures.csv"}) fs::remove(outDir / stale);
-  std::vector<fs::path> staleRetryLogs;  // logs/<suffix>.retry-N.*, which this run may not write
-  for (const fs::directory_entry& entry : fs::directory_iterator(logsDir))
-    if (entry.path().filename().string().find(".retry-") != std::string::npos) staleRetryLogs.push_back(entry.path());
-  for (const fs::path& stale : staleRetryLogs) fs::remove(stale);
+  removeStaleRunOutputs(outDir);
+  const bool privateCache = options.freshReferences || options.referenceCache.empty();
+  const fs::path referenceCache = privateCache ? fs::absolute(outDir / "reference-cache") : fs::path(options.referenceCache);
+  if (privateCache) fs::remove_all(referenceCache);
+
+  // The parts, and what each combination has to do.
+  const std::vector<WorkerPart> parts = workerParts(units, combinations.size());
+  std::vector<std::size_t> taskTotals(combinations.size(), 0);
+  std::vector<int> partCounts(combinations.size(), 0);
+  for (const WorkerPart& part : parts) {
+    taskTotals[part.combination] += part.tasks.size();
+    ++partCounts[part.combination];
+  }
+  std::vector<std::string> names;
+  for (const BackendCombination& c : combinations) names.push_back(c.suffix);
+  for (std::size_t c = 0; c < combinations.size(); ++c)
+    if (taskTotals[c] > 0) out << "run: " << names[c] << ": " << taskTotals[c] << " test(s)" << std::endl;
+  out << "run: " << parts.size() << " worker part(s), up to " << jobs << " at once"
+      << (options.shard ? ", shard " + std::to_string(options.shard->index) + "/" +
+                              std::to_string(options.shard->total)
+                        : std::string())
+      << std::endl;
+
+  RunProgress progress(out, options.progressInPlace, names, taskTotals);
+  const auto timeout = std::chrono::milliseconds(static_cast<long long>(options.timeoutSeconds * 1000));
+  auto planOf = [&](std::size_t combination, std::vector<WorkerTask> tasks) {
+    return WorkerPlan{combinations[combination], options.device,         options.expectDriver,
+                      fs::absolute(outDir).string(), referenceCache.string(), std::move(tasks)};
+  };
+  auto callbacksOf = [&](std::size_t combination) {
+    PartCallbacks callbacks;
+    callbacks.taskDone = [&progress, &expected, combination](const WorkerTask& task, const Json& result) {
+      const Verdict raw = rawVerdictOf(result);
+      const bool failed = task.mutant == "none" &&
+                          comparison::isRunFailure(applyExpectation(raw, expected.find(task.test)));
+      progress.taskDone(combination, failed);
+    };
+    callbacks.note = [&progress](const std::string& line) { progress.note(line); };
+    return callbacks;
+  };
+
+  // Every part, up to --jobs at once (runner/part_scheduler.h).
+  std::vector<PartOutcome> partOutcomes(parts.size());
+  runPartsInParallel(
+      parts, jobs,
+      [&](std::size_t p, const std::function<void()>& backendUp) {
+        const WorkerPart& part = parts[p];
+        PartCallbacks callbacks = callbacksOf(part.combination);
+        callbacks.backendUp = backendUp;
+        partOutcomes[p] = runPart(planOf(part.combination, part.tasks), options.workerExecutable, timeout, logsDir,
+                                  names[part.combination] + ".part-" + std::to_string(part.number), callbacks);
+      },
+      [&](std::size_t p, std::size_t firstPart) {
+        // The combination's first part never got its backend up: every other
+        // part would do the same, so its tasks take that part's verdict.
+        const PartOutcome& first = partOutcomes[firstPart];
+        PartOutcome skipped;
+        skipped.status = first.status;
+        skipped.message = first.message;
+        const Json said = first.results.empty()
+                              ? abnormalResult(parts[p].tasks.front(), Verdict::Crash, "its first worker part failed")
+                              : first.results.back();
+        const Verdict verdict = rawVerdictOf(said);
+        for (const WorkerTask& task : parts[p].tasks)
+          skipped.results.push_back(abnormalResult(task, verdict, said.value("message", "")));
+        progress.tasksSkipped(parts[p].combination, parts[p].tasks.size());
+        partOutcomes[p] = std::move(skipped);
+      });
+  for (std::size_t c = 0; c < combinations.size(); ++c)
+    if (partCounts[c] > 0) concatenateLogs(logsDir, names[c], partCounts[c]);
+
+  std::vector<CombinationOutcome> outcomes(combinations.size());
+  std::vector<std::vector<WorkerTask>> planTasks(combinations.size());
+  for (std::size_t c = 0; c < combinations.size(); ++c) {
+    std::vector<const PartOutcome*> mine;
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      if (parts[p].combination == c) {
+        mine.push_back(&partOutcomes[p]);
+        planTasks[c].insert(planTasks[c].end(), parts[p].tasks.begin(), parts[p].tasks.end());
+      }
+    outcomes[c] = combineParts(mine);
+  }
+
+  // Flake detection: the model's tests that failed, crashed or timed out
+  // run again, just those, in fresh workers, up to --flake-retries times
+  // (mutant tasks are meant to fail and are never retried; nor is a backend
+  // that is NotSupported or an error, whose every test would do the same).
+  // Each round retries every combination's tests, one worker per
+  // combination, up to --jobs at once.
+  std::vector<std::vector<std::vector<Attempt>>> attempts(combinations.size());
+  for (std::size_t c = 0; c < combinations.size(); ++c)
+    for (const Json& result : outcomes[c].results) attempts[c].push_back({{result, "logs/" + names[c] + ".log"}});
+  for (int retry = 1; retry <= options.flakeRetries; ++retry) {
+    std::vector<WorkerPart> retryParts;
+    std::vector<std::vector<std::size_t>> retried;  // per retry part, the plan indices of its tasks
+    for (std::size_t c = 0; c < combinations.size(); ++c) {
+      if (outcomes[c].status != BackendStatus::Ran) continue;
+      WorkerPart part{c, retry, {}};
+      std::vector<std::size_t> indices;
+      for (std::size_t i = 0; i < planTasks[c].size(); ++i) {
+        const WorkerTask& task = planTasks[c][i];
+        const Verdict last = rawVerdictOf(attempts[c][i].back().result);
+        if (task.mutant != "none" || !worthRetrying(last, expected.find(task.test))) continue;
+        indices.push_back(i);
+        part.tasks.push_back(task);
+      }
+      if (indices.empty()) continue;
+      progress.note("run: " + names[c] + ": retry " + std::to_string(retry) + " of " +
+                    std::to_string(options.flakeRetries) + ": " + std::to_string(indices.size()) +
+                    " test(s) in a fresh worker");
+      retryParts.push_back(std::move(part));
+      retried.push_back(std::move(indices));
+    }
+    if (retryParts.empty()) break;
+    std::vector<PartOutcome> again(retryParts.size());
+    PartCallbacks quiet;
+    quiet.note = [&progress](const std::string& line) { progress.note(line); };
+    runPartsInParallel(
+        retryParts, jobs,
+        [&](std::size_t p, const std::function<void()>&) {
+          const std::size_t c = retryParts[p].combination;
+          again[p] = runPart(planOf(c, retryParts[p].tasks), options.workerExecutable, timeout, logsDir,
+                             names[c] + ".retry-" + std::to_string(retry), quiet);
+        },
+        nullptr);
+    for (std::size_t p = 0; p < retryParts.size(); ++p) {
+      const std::size_t c = retryParts[p].combination;
+      outcomes[c].workerSeconds += again[p].wallSeconds;
+      for (std::size_t k = 0; k < retried[p].size(); ++k)
+        attempts[c][retried[p][k]].push_back(
+            {again[p].results[k], "logs/" + names[c] + ".retry-" + std::to_string(retry) + ".log"});
+    }
+  }
+  progress.finish();
+  if (privateCache) fs::remove_all(referenceCache);
 
   Json backendsJson = Json::array();
   Json tests = Json::array();
   Json mutantsJson = Json::array();
   bool anyRan = false, allGood = true;
-  std::vector<std::string> flakes;  // "test: Crash, Pass", for the summary
+  std::vector<std::string> flakes;     // "test: Crash, Pass", for the summary
+  std::vector<std::string> summaries;  // one line per combination
   std::map<std::string, const CatalogueEntry*> sceneOfCase;
   for (const CatalogueEntry& scene : catalogue) sceneOfCase[scene.file.caseName()] = &scene;
 
-  for (const BackendCombination& combination : combinations) {
-    WorkerPlan plan{combination, options.device, options.expectDriver, fs::absolute(outDir).string(), {}};
-    if (!options.mutantsOnly)
-      for (const CatalogueEntry& scene : catalogue)
-        plan.tasks.push_back({scene.file.caseName() + "." + combination.suffix, scene.file.path.string(), "none"});
-    for (const std::string& mutant : mutants)
-      for (const CatalogueEntry& scene : catalogue)
-        plan.tasks.push_back({scene.file.caseName() + "." + combination.suffix, scene.file.path.string(), mutant});
-
-    out << "run: " << combination.suffix << ": " << plan.tasks.size() << " test(s)" << std::endl;
-    CombinationOutcome outcome = runCombination(plan, options, logsDir, combination.suffix, out);
+  for (std::size_t c = 0; c < combinations.size(); ++c) {
+    if (taskTotals[c] == 0) continue;  // a shard without this combination's scenes
+    const BackendCombination& combination = combinations[c];
+    const CombinationOutcome& outcome = outcomes[c];
     anyRan = anyRan || outcome.status != BackendStatus::NotSupported;  // an error is present, and fails
-
-    // Flake detection: the model's tests that failed, crashed or timed out
-    // run again, just those, in fresh workers, up to --flake-retries times
-    // (mutant tasks are meant to fail and are never retried; nor is a backend
-    // that is NotSupported or an error, whose every test would do the same).
-    std::vector<std::vector<Attempt>> attempts(plan.tasks.size());
-    for (std::size_t i = 0; i < plan.tasks.size(); ++i)
-      attempts[i].push_back({outcome.results[i], "logs/" + combination.suffix + ".log"});
-    for (int retry = 1; retry <= options.flakeRetries && outcome.status == BackendStatus::Ran; ++retry) {
-      WorkerPlan retryPlan = plan;
-      retryPlan.tasks.clear();
-      std::vector<std::size_t> retried;  // plan indices of retryPlan's tasks
-      for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
-        const WorkerTask& task = plan.tasks[i];
-        const Verdict last = rawVerdictOf(attempts[i].back().result);
-        if (task.mutant != "none" || !worthRetrying(last, expected.find(task.test))) continue;
-        retried.push_back(i);
-        retryPlan.tasks.push_back(task);
-      }
-      if (retried.empty()) break;
-      const std::string stem = combination.suffix + ".retry-" + std::to_string(retry);
-      out << "run: " << combination.suffix << ": retry " << retry << " of " << options.flakeRetries << ": "
-          << retried.size() << " test(s) in a fresh worker" << std::endl;
-      const CombinationOutcome again = runCombination(retryPlan, options, logsDir, stem, out);
-      outcome.wallSeconds += again.wallSeconds;
-      for (std::size_t k = 0; k < retried.size(); ++k)
-        attempts[retried[k]].push_back({again.results[k], "logs/" + stem + ".log"});
-    }
-
     std::map<Verdict, int> counted;
     std::map<std::string, std::vector<Json>> mutantResults;
     std::map<std::string, Verdict> cleanVerdicts;
-    for (std::size_t i = 0; i < plan.tasks.size(); ++i) {
-      const WorkerTask& task = plan.tasks[i];
+    for (std::size_t i = 0; i < planTasks[c].size(); ++i) {
+      const WorkerTask& task = planTasks[c][i];
       if (task.mutant != "none") {
         mutantResults[task.mutant].push_back(outcome.results[i]);
         continue;
@@ -387,7 +452,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
       // that of its last failing attempt (for a Flake, the failure and its
       // evidence; a retry that found the backend gone, NotSupported, does not
       // turn a failure into a skip).
-      const std::vector<Attempt>& tries = attempts[i];
+      const std::vector<Attempt>& tries = attempts[c][i];
       const bool flake = tries.size() > 1 && passed(rawVerdictOf(tries.back().result));
       std::size_t shown = tries.size() - 1;
       while (shown > 0 && !isFailingAttempt(rawVerdictOf(tries[shown].result))) --shown;
@@ -413,16 +478,19 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
       }
       tests.push_back(std::move(record));
     }
-    Json mutantCounts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
+    std::vector<const Json*> mutantRecords;
+    const std::size_t firstMutant = mutantsJson.size();
     for (const std::string& mutant : mutants) {
-      MutantOutcome m = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
-      // mutant_counts: killed, survived, and "other" for the statuses that prove nothing.
-      const bool ownBucket = m.status == MutantStatus::Killed || m.status == MutantStatus::Survived;
-      const std::string bucket = ownBucket ? std::string(comparison::mutantStatusName(m.status)) : "other";
-      mutantCounts[bucket] = mutantCounts[bucket].get<int>() + 1;
-      if (comparison::isRunFailure(m.status)) allGood = false;
-      mutantsJson.push_back(std::move(m.record));
+      Json m = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
+      const MutantStatus status = *comparison::parseMutantStatus(m["status"].get<std::string>());
+      // In a shard, a mutant that survives this shard's scenes may be killed
+      // by another shard's: only the merged run can say it survived.
+      const bool provesNothingYet = options.shard && status == MutantStatus::Survived;
+      if (comparison::isRunFailure(status) && !provesNothingYet) allGood = false;
+      mutantsJson.push_back(std::move(m));
     }
+    for (std::size_t k = firstMutant; k < mutantsJson.size(); ++k) mutantRecords.push_back(&mutantsJson[k]);
+    const Json mutantCounts = mutantCountsJson(mutantRecords);
     if (comparison::isRunFailure(outcome.status)) allGood = false;
     backendsJson.push_back({{"backend", combination.suffix},
                             {"api_backend", combination.backend},
@@ -433,28 +501,22 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                             {"expected_failures_file", joined(expected.files())},
                             {"counts", countsJson(counted)},
                             {"mutant_counts", mutantCounts},
-                            {"wall_s", outcome.wallSeconds},
+                            {"wall_s", outcome.workerSeconds},
+                            {"task_ms", taskMilliseconds(outcome.results)},
                             {"log", "logs/" + combination.suffix + ".log"}});
-    out << "run: " << combination.suffix << ": " << outcome.status;
-    if (!outcome.message.empty()) out << " (" << outcome.message << ")";
+    std::ostringstream line;
+    line << "run: " << combination.suffix << ": " << outcome.status;
+    if (!outcome.message.empty()) line << " (" << outcome.message << ")";
     for (const Verdict verdict : comparison::kAllVerdicts)
-      if (counted[verdict] > 0) out << ", " << counted[verdict] << " " << verdict;
+      if (counted[verdict] > 0) line << ", " << counted[verdict] << " " << verdict;
     if (!mutants.empty())
-      out << "; mutants: " << mutantCounts["killed"].get<int>() << " killed, " << mutantCounts["survived"].get<int>()
-          << " survived";
-    out << " (" << std::fixed << std::setprecision(1) << outcome.wallSeconds << " s)" << std::defaultfloat
-        << std::endl;
+      line << "; mutants: " << mutantCounts["killed"].get<int>() << " killed, "
+           << mutantCounts["survived"].get<int>() << " survived";
+    line << " (" << std::fixed << std::setprecision(1) << outcome.workerSeconds << " s in workers)";
+    summaries.push_back(line.str());
   }
 
-  // The slowest tests, for whoever keeps the run short (Mesa CI prints the same).
-  std::vector<std::pair<double, std::string>> times;
-  for (const Json& t : tests)
-    if (t["timings_ms"].is_object()) times.emplace_back(t["timings_ms"]["total"].get<double>(), t["name"]);
-  std::sort(times.begin(), times.end(), std::greater<>());
-  if (times.size() > 10) times.resize(10);
-  Json slowest = Json::array();
-  for (const auto& [ms, name] : times) slowest.push_back({{"name", name}, {"total_ms", ms}});
-
+  const Json slowest = slowestTests(tests);
   const Json results = {{"format", "lightcts-results"},
                         {"version", 1},
                         {"lightcts_revision", revision()},
@@ -463,6 +525,11 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"command", options.commandLine},
                         {"machine", machineJson()},
                         {"scenes_dir", options.scenesDir},
+                        {"scenes_digest", sceneDigest},
+                        {"mutants_run", mutants},
+                        {"jobs", jobs},
+                        {"shard", shardJson},
+                        {"reference_cache", privateCache ? Json("fresh") : Json(referenceCache.string())},
                         {"timeout_s", options.timeoutSeconds},
                         {"flake_retries", options.flakeRetries},
                         {"flakes_fail", options.flakesFail},
@@ -470,12 +537,9 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"tests", tests},
                         {"mutants", mutantsJson},
                         {"slowest", slowest}};
-  reports::writeHtmlReport(results, outDir / "report");
-  reports::writeJunit(results, outDir / "junit.xml");
-  reports::writeRunCsvs(results, outDir);  // results.csv, failures.csv (deqp-runner's lists)
-  // Last: its presence says the run finished and the other files are complete.
-  imaging::writeFileAtomically(outDir / "results.json", results.dump(1) + "\n");
+  writeRunOutputs(results, outDir);
 
+  for (const std::string& line : summaries) out << line << "\n";
   // Flakes apart: they passed, so the per-backend lines alone would hide them.
   if (!flakes.empty()) {
     out << "flaky tests (failed, then passed on a retry in a fresh worker; "
@@ -484,7 +548,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (const std::string& flake : flakes) out << "  " << flake << "\n";
   }
   out << "slowest tests:\n";
-  for (const auto& [ms, name] : times) out << "  " << formatMs(ms) << "  " << name << "\n";
+  for (const Json& s : slowest) out << "  " << formatMs(s["total_ms"].get<double>()) << "  " << s["name"].get<std::string>() << "\n";
   out << "run: results in " << (outDir / "results.json").string() << ", report in "
       << (outDir / "report" / "index.html").string() << std::endl;
   if (!anyRan) {

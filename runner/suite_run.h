@@ -1,12 +1,18 @@
-// `lightcts run` (SPEC 8, issue 6): every scene on every backend combination
-// asked for, each combination in worker processes (`lightcts worker`), so a
-// driver crash or hang becomes that test's Crash or Timeout and the run goes
-// on. Writes results.json (docs/results-format.md), junit.xml and
-// report/index.html under the output folder, and prints a summary with the
-// slowest tests.
+// `lightcts run` (SPEC 8, issues 6 and 20): every scene on every backend
+// combination asked for, in worker processes (`lightcts worker`), so a driver
+// crash or hang becomes that test's Crash or Timeout and the run goes on.
+// Each combination's tests are split into parts (runner/run_plan.h), up to
+// --jobs of them in workers at once; --shard I/N runs one of N disjoint
+// shards of the run (`lightcts merge` joins them). Writes results.json
+// (docs/results-format.md), junit.xml, results.csv, failures.csv and
+// report/index.html under the output folder, prints progress per
+// combination and a summary with the slowest tests.
 #pragma once
 
+#include "runner/run_plan.h"
+
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +31,16 @@ struct RunOptions {
   double timeoutSeconds = 120;        // per test
   int flakeRetries = 1;               // --flake-retries: re-runs of a failing, crashing or timed-out test
   bool flakesFail = false;            // --flakes-fail: a Flake fails the run
+  int jobs = 0;                       // --jobs: worker processes at once; 0: one per core
+  std::optional<ShardSpec> shard;     // --shard I/N; none: the whole run
+  std::string timingsFile;            // --timings: a results.json to balance the shards by
+  // The shared reference cache folder (conformance/reference_cache.h). With
+  // freshReferences, or when it is "", the run uses a cache of its own
+  // (OUT/reference-cache, removed at the end): every reference is computed
+  // in this run, once, and shared by its workers.
+  std::string referenceCache;
+  bool freshReferences = false;       // --fresh-references
+  bool progressInPlace = false;       // stdout is a terminal: redraw the progress lines in place
   std::string workerExecutable;       // the lightcts binary (/proc/self/exe)
   std::string commandLine;            // for results.json
 };
@@ -33,8 +49,9 @@ struct RunOptions {
 // expected-failures line says, is re-run up to flakeRetries times in a fresh
 // worker; one that then passes is Flake (docs/results-format.md).
 // Exit status: 0 when every test that ran passed (or failed as expected, or
-// was a Flake without flakesFail) and every mutant was killed; 1 otherwise;
-// 3 when no backend was present.
+// was a Flake without flakesFail) and every mutant was killed (in a shard, a
+// mutant that survives its shard's scenes fails only the merged run); 1
+// otherwise; 3 when no backend was present.
 // Throws std::invalid_argument / lighting::SceneLoadError / std::runtime_error
 // for bad input (the caller maps them to exit 2).
 int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err);

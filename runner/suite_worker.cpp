@@ -176,7 +176,9 @@ class Worker {
     auto it = references_.find(scene);
     if (it == references_.end()) {
       auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(scene));
-      it = references_.emplace(scene, std::make_unique<conformance::SceneReferences>(std::move(prepared))).first;
+      auto caching = conformance::referenceCaching(plan_.referenceCache, scene, prepared->scene);
+      it = references_.emplace(scene, std::make_unique<conformance::SceneReferences>(std::move(prepared), caching))
+               .first;
     }
     return *it->second;
   }

@@ -11,6 +11,7 @@ nlohmann::json planToJson(const WorkerPlan& plan) {
           {"device", plan.device},
           {"expect_driver", plan.expectDriver},
           {"out_dir", plan.outDir},
+          {"reference_cache", plan.referenceCache},
           {"tasks", tasks}};
 }
 
@@ -21,6 +22,7 @@ WorkerPlan planFromJson(const nlohmann::json& json) {
   plan.device = json.at("device").get<std::string>();
   plan.expectDriver = json.at("expect_driver").get<std::string>();
   plan.outDir = json.at("out_dir").get<std::string>();
+  plan.referenceCache = json.value("reference_cache", "");
   for (const auto& t : json.at("tasks"))
     plan.tasks.push_back({t.at("test").get<std::string>(), t.at("scene").get<std::string>(),
                           t.at("mutant").get<std::string>()});

@@ -24,6 +24,9 @@ struct WorkerPlan {
   std::string device;        // --device, "" for the default
   std::string expectDriver;  // --expect-driver, "" for no check
   std::string outDir;        // evidence goes under outDir/evidence and outDir/mutants
+  // The reference cache folder (conformance/reference_cache.h) every worker
+  // of the run shares; "" for none (`--no-reference-cache`).
+  std::string referenceCache;
   std::vector<WorkerTask> tasks;
 };
 

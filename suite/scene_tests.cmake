@@ -81,6 +81,7 @@ endforeach()
 # suite/selection_tests.cmake.
 include(${CMAKE_CURRENT_LIST_DIR}/mutant_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/run_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/parallel_tests.cmake)
 if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/selection_tests.cmake)
   include(${CMAKE_CURRENT_LIST_DIR}/selection_tests.cmake)
 endif()

@@ -84,6 +84,7 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
     if (i > 0 && startsWith(a, "--backend=", value)) settings.backend = std::string(value);
     else if (i > 0 && startsWith(a, "--driver=", value)) settings.driver = std::string(value);
     else if (i > 0 && startsWith(a, "--scenes=", value)) settings.scenes = std::filesystem::path(value);
+    else if (i > 0 && startsWith(a, "--ideal_cache=", value)) settings.idealCache = std::filesystem::path(value);
     else if (i > 0 && startsWith(a, "--peak_gflops=", value)) {
       char* end = nullptr;
       const std::string text(value);

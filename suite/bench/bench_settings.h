@@ -21,6 +21,10 @@ struct Settings {
   bool quick = false;
   bool suiteScenes = false;
   std::filesystem::path scenes;  // --scenes; the caller's default when not given
+  // --ideal_cache=DIR: the ideal references, untimed and the same for every
+  // combination, read from DIR when an earlier process of the run left them
+  // there, else rendered and left there (`lightcts bench` passes raw/ideal).
+  std::filesystem::path idealCache;
   // --mutant (tests only): every backend draws this deliberately wrong
   // variant (shaders/shader_variant.h), so a test can time a broken mode.
   shaders::Mutant mutant = shaders::Mutant::None;

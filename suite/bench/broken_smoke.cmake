@@ -9,7 +9,7 @@
 # a point of the speed-against-error plot, nor on its Pareto front.
 # -DRENDER_BENCH=<render_bench> -DBENCH_TOOL=<bench_tool> -DOUT=<json file> -DPAGES=<folder>
 include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
-run_render_bench("^frame/vulkan/lights64-1280x720/deferred-(hdr32|ldr8)(/|$)" --mutant=unclamped-ldr-decode)
+run_render_bench("^frame/vulkan/lights64-[0-9]+x[0-9]+/deferred-(hdr32|ldr8)(/|$)" --mutant=unclamped-ldr-decode)
 measured_entries()
 math(EXPR last "${count} - 1")
 foreach(i RANGE ${last})

@@ -9,7 +9,7 @@
 # -DRENDER_BENCH=<render_bench> -DOUT=<json file>
 set(RENDER_BENCH_SET "")
 include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
-run_render_bench("^(frame/vulkan/lights64-1280x720/cookie(s|-lights)|upload/vulkan/lights64-1280x720/cookies/256)(/|$)"
+run_render_bench("^(frame/vulkan/lights64-[0-9]+x[0-9]+/cookie(s|-lights)|upload/vulkan/lights64-[0-9]+x[0-9]+/cookies/256)(/|$)"
                  --benchmark_repetitions=1)
 measured_entries()
 foreach(i IN LISTS indices)

@@ -12,15 +12,18 @@
 namespace bench {
 
 std::vector<int> cookieUploadSizes(bool quick) {
-  if (quick) return {256};
+  if (quick) return {256};  // --quick, and a slow driver (softpipe's share of the budget)
   return {64, 256, 1024};
 }
 
 void registerCookieUploads(Registrar& r) {
-  const std::string scene = kFieldScene;
-  for (const int size : cookieUploadSizes(r.run().settings.quick)) {
-    r.upload(scene, kCookiesMode, std::to_string(size), [scene, size] {
+  const std::string scene = fieldSceneName(r.run());
+  const FieldSize fieldSize = bench::fieldSize(r.run());
+  for (const int size : cookieUploadSizes(r.run().settings.quick || r.run().slow())) {
+    r.upload(scene, kCookiesMode, std::to_string(size), [scene, size, fieldSize] {
       FieldSpec field;
+      field.width = fieldSize.width;
+      field.height = fieldSize.height;
       field.cookies = true;
       field.cookieSize = size;
       const std::string name = scene + "-" + kCookiesMode + "-" + std::to_string(size);

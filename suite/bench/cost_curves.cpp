@@ -27,8 +27,12 @@ void registerCurves(Registrar& r) {
   const RunState& run = r.run();
   const bool quick = run.settings.quick;
   // The light and object curves at 640x360 (a quarter of the field's
-  // pixels, to fit the time budget), at 256x144 on a slow driver.
-  const int curveWidth = run.slow() ? 256 : 640, curveHeight = run.slow() ? 144 : 360;
+  // pixels, to fit the time budget), at 256x144 on a slow driver and with
+  // --quick (a smoke run: that every curve draws, not what it costs).
+  // --quick on a slow driver: 128x72, a frame there costing about a second at 256x144.
+  const bool small = run.slow() || quick;
+  const bool tiny = run.slow() && quick;
+  const int curveWidth = tiny ? 128 : small ? 256 : 640, curveHeight = tiny ? 72 : small ? 144 : 360;
 
   const std::vector<int> lightCounts =
       quick ? std::vector<int>{1, 64, 256} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128, 256};
@@ -52,7 +56,8 @@ void registerCurves(Registrar& r) {
   }
 
   std::vector<std::pair<int, int>> sizes;
-  if (run.slow()) sizes = {{128, 72}, {256, 144}, {512, 288}};
+  if (tiny) sizes = {{64, 36}, {128, 72}};
+  else if (small) sizes = {{128, 72}, {256, 144}, {512, 288}};
   else sizes = {{256, 256}, {640, 360}, {1280, 720}, {1920, 1080}};
   if (quick) sizes.resize(2);
   for (const auto& [w, h] : sizes) {

@@ -30,8 +30,8 @@ FieldModeSpec modeOf(FrameMode scene, bool fullShader, std::string name, bool sp
 // The ideal reference a mode's error is against: one per profile, BRDF and
 // light set (all-lights, per-object and full-shader share one; the deferred
 // modes take the forward field's, fieldModes).
-std::string referenceKeyOf(const FieldModeSpec& mode) {
-  std::string key = std::string(kFieldScene) + (mode.field.mode == FrameMode::Legacy4x4 ? "/legacy" : "/srp");
+std::string referenceKeyOf(const std::string& scene, const FieldModeSpec& mode) {
+  std::string key = scene + (mode.field.mode == FrameMode::Legacy4x4 ? "/legacy" : "/srp");
   if (mode.field.specularBrdf) key.append("-").append(kSpecularSuffix);
   if (mode.field.cookies) key.append("-").append(kCookiesMode);
   else if (mode.field.shadows) key.append("-shadows");  // every resolution and filter: ray-traced shadows
@@ -41,6 +41,17 @@ std::string referenceKeyOf(const FieldModeSpec& mode) {
 }
 
 }  // namespace
+
+FieldSize fieldSize(const RunState& run) {
+  if (run.settings.quick) return run.slow() ? FieldSize{160, 90} : FieldSize{320, 180};
+  if (run.slow()) return {640, 360};
+  return {1280, 720};
+}
+
+std::string fieldSceneName(const RunState& run) {
+  const FieldSize size = fieldSize(run);
+  return "lights64-" + std::to_string(size.width) + "x" + std::to_string(size.height);
+}
 
 std::string shadowModeName(ShadowFilter filter, int resolution) {
   const char* name = filter == ShadowFilter::Hard ? "hard" : filter == ShadowFilter::Bilinear ? "bilinear" : "tent3x3";
@@ -94,6 +105,9 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow) {
     modes.back().field.shadowLights = true;
     for (const ShadowFilter filter : {ShadowFilter::Hard, ShadowFilter::Bilinear, ShadowFilter::Tent3x3})
       for (const int resolution : kShadowResolutions) {
+        // A slow driver (softpipe's share of the budget, issue 20): the
+        // smallest map and a middle one per filter, not all five.
+        if (slow && resolution != 256 && resolution != 1024) continue;
         modes.push_back(modeOf(FrameMode::AllLights, false, shadowModeName(filter, resolution)));
         modes.back().field.shadows = true;
         modes.back().field.shadowResolution = resolution;
@@ -106,14 +120,17 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow) {
 }
 
 FieldModes fieldModes(const RunState& run) {
-  const std::string scene = kFieldScene;
+  const std::string scene = fieldSceneName(run);
+  const FieldSize size = fieldSize(run);
   FieldModes frames;
-  for (const FieldModeSpec& mode : fieldModeSpecs(run.settings.quick, run.slow())) {
+  for (FieldModeSpec mode : fieldModeSpecs(run.settings.quick, run.slow())) {
+    mode.field.width = size.width;
+    mode.field.height = size.height;
     const FieldSpec& field = mode.field;
     BenchFrameSpec spec;
     spec.prepared = baking::prepareBakedScene(fieldScene(field, scene + "-" + mode.name));
     spec.fullShader = mode.fullShader;
-    spec.referenceKey = referenceKeyOf(mode);
+    spec.referenceKey = referenceKeyOf(scene, mode);
     spec.errorKey = scene + "/" + mode.name;
     spec.everyLightInView = true;
     if (deferredBufferOf(field.mode)) {
@@ -135,14 +152,16 @@ FieldModes fieldModes(const RunState& run) {
 }
 
 void registerFieldModes(Registrar& r, const NamedFrames& frames) {
+  const std::string scene = fieldSceneName(r.run());
   for (const auto& [mode, bench] : frames) {
-    r.frame(kFieldScene, mode, "", bench, false);
-    if (!r.run().slow()) r.frame(kFieldScene, mode, "", bench, true);
+    r.frame(scene, mode, "", bench, false);
+    if (!r.run().slow()) r.frame(scene, mode, "", bench, true);
   }
 }
 
 void registerFieldPipelines(Registrar& r, const NamedFrames& frames) {
-  for (const auto& [mode, bench] : frames) r.pipeline(kFieldScene, mode, bench);
+  const std::string scene = fieldSceneName(r.run());
+  for (const auto& [mode, bench] : frames) r.pipeline(scene, mode, bench);
 }
 
 }  // namespace bench

@@ -4,12 +4,12 @@
 # 0 and its JSON must carry the counters of docs/bench-format.md.
 # -DRENDER_BENCH=<render_bench> -DOUT=<json file>
 include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
-run_render_bench("^frame/vulkan/(lights64-1280x720/all-lights|curve-lights/all-lights/64)(/|$)" --peak_gflops=10)
+run_render_bench("^frame/vulkan/(lights64-[0-9]+x[0-9]+/all-lights|curve-lights/all-lights/64)(/|$)" --peak_gflops=10)
 measured_entries()
 foreach(i IN LISTS indices)
   string(JSON name GET "${json}" benchmarks ${i} name)
   set(required wall_ms pixels lights lights_per_pixel pixels_per_s pixel_light_evals_per_s limit_ms flops_per_pixel_light)
-  if(name MATCHES "^frame/vulkan/lights64-1280x720/")
+  if(name MATCHES "^frame/vulkan/lights64-[0-9]+x[0-9]+/")
     list(APPEND required ${error_counters})
   endif()
   require_counters(${i} ${required})

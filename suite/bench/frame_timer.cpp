@@ -58,8 +58,9 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
     if (withError) run.idealFor(bench);  // rendered now, untimed, then cached
     backend.preparePipeline(bench.frame);
     // Repetitions call this again: the warm-up draw is needed only when
-    // another frame was drawn on this backend since.
-    if (!run.slow() && run.lastDrawn[&backend] != &bench) backend.draw(bench.frame);
+    // another frame was drawn on this backend since; --quick times nothing
+    // worth warming up for.
+    if (!run.slow() && !run.settings.quick && run.lastDrawn[&backend] != &bench) backend.draw(bench.frame);
     run.lastDrawn[&backend] = &bench;
     double wallMs = 0, deviceMs = 0, shadowMs = 0;
     bool deviceEveryTime = true, shadowEveryTime = bench.frame.shadows.any();

@@ -19,10 +19,10 @@ namespace {
 using namespace lighting;
 
 // Bakes `unbaked` fresh (freshBake: no cache, every core) while it is
-// cheap: up to 5 bakes (3 with --quick) within about a second (0.2 s); the
+// cheap: up to 5 bakes (1 with --quick) within about a second (0.2 s); the
 // median of their times and the last bake.
 std::shared_ptr<const BakedLighting> timedBake(const PreparedScene& unbaked, bool quick, BakeTime& time) {
-  const int maxRuns = quick ? 3 : 5;
+  const int maxRuns = quick ? 1 : 5;
   const double budgetMs = quick ? 200 : 1000;
   std::vector<double> times;
   std::shared_ptr<const BakedLighting> baked;

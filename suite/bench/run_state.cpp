@@ -1,6 +1,13 @@
 #include "suite/bench/run_state.h"
 
+#include "imaging/atomic_file.h"
 #include "reference/reference_renderer.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <string>
 
 #include <cstdlib>
 #include <system_error>
@@ -20,9 +27,50 @@ backends::Backend& RunState::backendFor(const BenchFrame& bench) {
   return *full;
 }
 
+namespace {
+
+// The cache file of a reference key: every byte outside [A-Za-z0-9.-] as
+// "_" ("lights64-1280x720/srp" -> "lights64-1280x720_srp.ideal").
+fs::path idealCacheFile(const fs::path& dir, const std::string& key) {
+  std::string name;
+  for (const char c : key) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-';
+    name += ok ? c : '_';
+  }
+  return dir / (name + ".ideal");
+}
+
+// The file holds width, height, channels (int32) then the floats, bit for
+// bit what the renderer returned: a cached reference is the rendered one.
+void writeIdeal(const fs::path& file, const imaging::Image& image) {
+  const std::int32_t header[3] = {image.width, image.height, image.channels};
+  std::string bytes(reinterpret_cast<const char*>(header), sizeof header);
+  bytes.append(reinterpret_cast<const char*>(image.pixels.data()), image.pixels.size() * sizeof(float));
+  fs::create_directories(file.parent_path());
+  imaging::writeFileAtomically(file, bytes);  // processes at once may write the same key: each whole
+}
+
+std::optional<imaging::Image> readIdeal(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::int32_t header[3] = {};
+  if (!in || !in.read(reinterpret_cast<char*>(header), sizeof header)) return std::nullopt;
+  if (header[0] <= 0 || header[1] <= 0 || header[2] <= 0) return std::nullopt;
+  imaging::Image image(header[0], header[1], header[2]);
+  const auto size = std::streamsize(image.pixels.size() * sizeof(float));
+  if (!in.read(reinterpret_cast<char*>(image.pixels.data()), size) || in.peek() != EOF) return std::nullopt;
+  return image;
+}
+
+}  // namespace
+
 const imaging::Image& RunState::idealFor(const BenchFrame& bench) {
   const BenchFrameSpec& spec = bench.spec;
   auto it = ideal.find(spec.referenceKey);
+  const fs::path cacheFile =
+      settings.idealCache.empty() ? fs::path() : idealCacheFile(settings.idealCache, spec.referenceKey);
+  if (it == ideal.end() && !cacheFile.empty())
+    if (std::optional<imaging::Image> cached = readIdeal(cacheFile))
+      it = ideal.emplace(spec.referenceKey, std::move(*cached)).first;
   if (it == ideal.end()) {
     const reference::ReferenceOptions idealOptions{.ideal = true};
     if (spec.referencePrepared) {
@@ -33,6 +81,7 @@ const imaging::Image& RunState::idealFor(const BenchFrame& bench) {
       const reference::ReferenceRenderer renderer(spec.prepared);
       it = ideal.emplace(spec.referenceKey, renderer.render(bench.frame, idealOptions).value).first;
     }
+    if (!cacheFile.empty()) writeIdeal(cacheFile, it->second);
   }
   return it->second;
 }

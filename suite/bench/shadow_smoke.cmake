@@ -7,7 +7,7 @@
 # -DRENDER_BENCH=<render_bench> -DOUT=<json file>
 set(RENDER_BENCH_SET "")
 include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
-run_render_bench("^frame/vulkan/lights64-1280x720/shadows-bilinear-256(/|$)"
+run_render_bench("^frame/vulkan/lights64-[0-9]+x[0-9]+/shadows-bilinear-256(/|$)"
                  --benchmark_repetitions=1)
 measured_entries()
 foreach(i IN LISTS indices)

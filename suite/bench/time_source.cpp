@@ -11,8 +11,10 @@ namespace bench {
 
 std::string calibrateTimeSource(RunState& run) {
   FieldSpec field;
-  field.width = run.slow() ? 128 : 640;
-  field.height = run.slow() ? 72 : 360;
+  // Small on a slow driver and with --quick (a smoke run: only that it works).
+  const bool small = run.slow() || run.settings.quick;
+  field.width = small ? 128 : 640;
+  field.height = small ? 72 : 360;
   BenchFrameSpec spec;
   spec.prepared = baking::prepareBakedScene(fieldScene(field, "time-calibration"));
   const auto bench = makeBenchFrame(std::move(spec));

@@ -1,0 +1,143 @@
+#include "runner/part_run.h"
+
+#include "comparison/verdict.h"
+#include "imaging/atomic_file.h"
+#include "runner/worker_process.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace runner {
+namespace {
+
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using comparison::BackendStatus;
+using comparison::Verdict;
+
+std::string lastLines(const fs::path& file, int count) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::string text;
+  for (std::size_t i = lines.size() > std::size_t(count) ? lines.size() - count : 0; i < lines.size(); ++i)
+    text += lines[i] + "\n";
+  return text;
+}
+
+std::string verdictLine(Verdict verdict, const std::string& test, const std::string& how) {
+  std::ostringstream text;
+  text << "  " << verdict << " " << test;
+  if (!how.empty()) text << " (" << how << ")";
+  return text.str();
+}
+
+}  // namespace
+
+Json abnormalResult(const WorkerTask& task, Verdict verdict, const std::string& message) {
+  return {{"test", task.test},       {"raw_verdict", comparison::verdictName(verdict)},
+          {"message", message},      {"metrics", nullptr},
+          {"frames", Json::array()}, {"popping_score", nullptr},
+          {"timings_ms", nullptr},   {"evidence", nullptr}};
+}
+
+PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable, std::chrono::milliseconds timeout,
+                    const fs::path& logsDir, const std::string& fileStem, const PartCallbacks& callbacks) {
+  PartOutcome outcome;
+  const auto start = Clock::now();
+  const fs::path planFile = logsDir / (fileStem + ".plan.json");
+  imaging::writeFileAtomically(planFile, planToJson(plan).dump(1) + "\n");
+  const fs::path logFile = logsDir / (fileStem + ".log");
+  fs::remove(logFile);  // the workers append; an earlier run's lines are not this run's
+
+  auto record = [&](const WorkerTask& task, Json result) {
+    if (callbacks.taskDone) callbacks.taskDone(task, result);
+    outcome.results.push_back(std::move(result));
+  };
+  auto note = [&](const std::string& line) {
+    if (callbacks.note) callbacks.note(line);
+  };
+
+  std::size_t next = 0;
+  while (next < plan.tasks.size()) {
+    WorkerProcess worker({workerExecutable, "worker", "--plan", planFile.string(), "--start", std::to_string(next)},
+                         logFile.string());
+    std::string line;
+    bool stop = false;
+    bool gotResult = false;  // this worker reported at least one test
+    bool backendUp = false;  // this worker said "device": its backend was created
+    for (;;) {
+      const auto status = worker.readLine(timeout, line);
+      if (status != WorkerProcess::ReadStatus::Line && !backendUp) {
+        const bool hung = status == WorkerProcess::ReadStatus::TimedOut;
+        const std::string how = worker.finish(hung);
+        outcome.status = BackendStatus::Error;
+        outcome.message = std::string(hung ? "the backend did not start within the timeout" : "the worker ended") +
+                          " before its backend was up (" + how + "); its last output:\n" + lastLines(logFile, 8);
+        for (; next < plan.tasks.size(); ++next)
+          record(plan.tasks[next], abnormalResult(plan.tasks[next], hung ? Verdict::Timeout : Verdict::Crash,
+                                                  outcome.message));
+        break;
+      }
+      if (status == WorkerProcess::ReadStatus::TimedOut) {
+        const std::string how = worker.finish(true);
+        const WorkerTask& task = plan.tasks[next];
+        record(task, abnormalResult(task, Verdict::Timeout,
+                                    "no result within " + std::to_string(timeout.count() / 1000.0) +
+                                        " s; worker " + how));
+        note(verdictLine(Verdict::Timeout, task.test, ""));
+        ++next;
+        break;
+      }
+      if (status == WorkerProcess::ReadStatus::Closed) {
+        const std::string how = worker.finish(false);
+        // Status 4 after a test's result: the worker reported a driver error
+        // and quit, so that a new one starts on a fresh device. No test is lost.
+        if (worker.exitStatus() == 4 && gotResult) break;
+        if (next < plan.tasks.size()) {
+          const WorkerTask& task = plan.tasks[next];
+          record(task, abnormalResult(task, Verdict::Crash,
+                                      "the worker ended during this test (" + how + "); its last output:\n" +
+                                          lastLines(logFile, 8)));
+          note(verdictLine(Verdict::Crash, task.test, how));
+          ++next;
+        }
+        break;
+      }
+      Json event;
+      try {
+        event = Json::parse(line);
+      } catch (const Json::parse_error&) {
+        continue;  // a driver that prints on stdout; the protocol lines are JSON
+      }
+      const std::string kind = event.value("kind", "");
+      if (kind == "device") {
+        outcome.device = event["device"];
+        backendUp = true;
+        if (callbacks.backendUp) callbacks.backendUp();
+      } else if (kind == "backend_unavailable" || kind == "backend_error") {
+        // A backend that ran before and is gone now is an error, not a skip.
+        const bool skip = kind == "backend_unavailable" && outcome.device.is_null();
+        outcome.status = skip ? BackendStatus::NotSupported : BackendStatus::Error;
+        outcome.message = event.value("message", "");
+        const Verdict verdict = skip ? Verdict::NotSupported : Verdict::Crash;
+        for (; next < plan.tasks.size(); ++next)
+          record(plan.tasks[next], abnormalResult(plan.tasks[next], verdict, outcome.message));
+        stop = true;
+        break;
+      } else if (kind == "result" && event.value("index", -1) == int(next)) {
+        event.erase("kind");
+        event.erase("index");
+        record(plan.tasks[next], std::move(event));
+        ++next;
+        gotResult = true;
+      }
+    }
+    if (stop) break;
+  }
+  outcome.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return outcome;
+}
+
+}  // namespace runner

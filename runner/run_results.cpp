@@ -1,0 +1,84 @@
+#include "runner/run_results.h"
+
+#include "baking/sha256.h"
+#include "imaging/atomic_file.h"
+#include "reports/csv_writer.h"
+#include "reports/html_report.h"
+#include "reports/junit_writer.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
+namespace runner {
+
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+Json countsJson(const std::map<comparison::Verdict, int>& counted) {
+  Json counts = Json::object();
+  for (const comparison::Verdict verdict : comparison::kAllVerdicts) {
+    const auto it = counted.find(verdict);
+    const int n = it == counted.end() ? 0 : it->second;
+    if (n > 0 || comparison::listedWhenZero(verdict)) counts[std::string(comparison::verdictName(verdict))] = n;
+  }
+  return counts;
+}
+
+Json mutantCountsJson(const std::vector<const Json*>& mutantRecords) {
+  Json counts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
+  for (const Json* record : mutantRecords) {
+    const auto status = comparison::parseMutantStatus(record->value("status", ""));
+    const bool ownBucket =
+        status == comparison::MutantStatus::Killed || status == comparison::MutantStatus::Survived;
+    const std::string bucket = ownBucket ? std::string(comparison::mutantStatusName(*status)) : "other";
+    counts[bucket] = counts[bucket].get<int>() + 1;
+  }
+  return counts;
+}
+
+Json slowestTests(const Json& tests) {
+  std::vector<std::pair<double, std::string>> times;
+  for (const Json& t : tests)
+    if (t.contains("timings_ms") && t["timings_ms"].is_object())
+      times.emplace_back(t["timings_ms"]["total"].get<double>(), t["name"].get<std::string>());
+  std::sort(times.begin(), times.end(), std::greater<>());
+  if (times.size() > 10) times.resize(10);
+  Json slowest = Json::array();
+  for (const auto& [ms, name] : times) slowest.push_back({{"name", name}, {"total_ms", ms}});
+  return slowest;
+}
+
+std::string scenesDigest(const std::vector<fs::path>& sceneFiles, const fs::path& root) {
+  std::string all;
+  for (const fs::path& file : sceneFiles) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string name = fs::relative(file, root).generic_string();
+    all += std::to_string(name.size()) + ":" + name + std::to_string(bytes.size()) + ":" + bytes;
+  }
+  return baking::toHex(baking::sha256(all.data(), all.size()));
+}
+
+void removeStaleRunOutputs(const fs::path& outDir) {
+  for (const char* stale : {"evidence", "mutants", "report"}) fs::remove_all(outDir / stale);
+  for (const char* stale : {"results.json", "junit.xml", "results.csv", "failures.csv"}) fs::remove(outDir / stale);
+  const fs::path logsDir = outDir / "logs";
+  if (!fs::is_directory(logsDir)) return;
+  std::vector<fs::path> stale;  // logs/<suffix>.retry-N.* and .part-K.*, which this run may not write
+  for (const fs::directory_entry& entry : fs::directory_iterator(logsDir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.find(".retry-") != std::string::npos || name.find(".part-") != std::string::npos)
+      stale.push_back(entry.path());
+  }
+  for (const fs::path& file : stale) fs::remove(file);
+}
+
+void writeRunOutputs(const Json& results, const fs::path& outDir) {
+  reports::writeHtmlReport(results, outDir / "report");
+  reports::writeJunit(results, outDir / "junit.xml");
+  reports::writeRunCsvs(results, outDir);  // results.csv, failures.csv (deqp-runner's lists)
+  imaging::writeFileAtomically(outDir / "results.json", results.dump(1) + "\n");
+}
+
+}  // namespace runner

@@ -1,0 +1,108 @@
+# Issue 20 through the real binary and real drivers:
+#   MODE=jobs:   `lightcts run --jobs 1` and `--jobs 2` over the same tests (a
+#                worker crash among them) write the same results, apart from
+#                timings (suite/check_same_results.py).
+#   MODE=shards: the same tests as one run, as 3 shards merged, and as 3
+#                shards balanced by the first run's --timings merged, are the
+#                same test for test; merging shards of different revisions,
+#                drivers or scene sets, with one missing or one twice exits 2
+#                and writes nothing.
+#   cmake -DLIGHTCTS=exe -DPYTHON=python3 -DCHECK=check_same_results.py -DOUT=dir -DMODE=jobs|shards
+#         "-DARGS=run arguments" ["-DENV=K=V;..."] -P parallel_outcome.cmake
+# A skip (exit 3: no backend present) prints NotSupported for ctest.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+
+# Runs `lightcts ARGV` and fails unless it exits `wanted`; sets `said` to its output.
+function(lightcts wanted)
+  set(command ${LIGHTCTS} ${ARGN})
+  if(ENV)
+    set(command ${CMAKE_COMMAND} -E env ${ENV} ${command})
+  endif()
+  execute_process(COMMAND ${command} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(status EQUAL 3)
+    message("${out}${err}")
+    message("NotSupported: no backend asked for is present")
+    set(skipped TRUE PARENT_SCOPE)
+    return()
+  endif()
+  if(NOT status EQUAL wanted)
+    message("${out}${err}")
+    message(FATAL_ERROR "lightcts ${ARGN} exited ${status}, expected ${wanted}")
+  endif()
+  set(said "${out}${err}" PARENT_SCOPE)
+endfunction()
+
+function(same_results a b)
+  execute_process(COMMAND ${PYTHON} ${CHECK} ${a} ${b} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${a} against ${b}: ${out}${err}")
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${a} and ${b} do not say the same")
+  endif()
+endfunction()
+
+# A refused merge: exit 2, the reason, and no results.json in --out.
+function(refused_merge reason)
+  file(REMOVE_RECURSE ${OUT}/refused)
+  lightcts(2 merge ${ARGN} --out ${OUT}/refused)
+  if(NOT said MATCHES "${reason}")
+    message(FATAL_ERROR "merge said '${said}', expected '${reason}'")
+  endif()
+  if(EXISTS ${OUT}/refused/results.json)
+    message(FATAL_ERROR "a refused merge wrote ${OUT}/refused/results.json")
+  endif()
+  message("refused as expected: ${said}")
+endfunction()
+
+if(MODE STREQUAL "jobs")
+  lightcts(1 run ${ARGS} --jobs 1 --out ${OUT}/jobs-1)
+  if(skipped)
+    return()
+  endif()
+  lightcts(1 run ${ARGS} --jobs 2 --out ${OUT}/jobs-2)
+  if(NOT said MATCHES "up to 2 at once")
+    message(FATAL_ERROR "--jobs 2 did not run two workers at once: ${said}")
+  endif()
+  same_results(${OUT}/jobs-1 ${OUT}/jobs-2)
+  return()
+endif()
+
+lightcts(0 run ${ARGS} --out ${OUT}/whole)
+if(skipped)
+  return()
+endif()
+set(shards "")
+set(balanced "")
+foreach(i 1 2 3)
+  lightcts(0 run ${ARGS} --shard ${i}/3 --out ${OUT}/shard-${i})
+  lightcts(0 run ${ARGS} --shard ${i}/3 --timings ${OUT}/whole/results.json --out ${OUT}/balanced-${i})
+  list(APPEND shards ${OUT}/shard-${i})
+  list(APPEND balanced ${OUT}/balanced-${i})
+endforeach()
+lightcts(0 merge ${shards} --out ${OUT}/merged)
+same_results(${OUT}/whole ${OUT}/merged)
+lightcts(0 merge ${balanced} --out ${OUT}/merged-balanced)
+same_results(${OUT}/whole ${OUT}/merged-balanced)
+
+# Shard 2 as if from another revision (its results.json edited).
+file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-revision)
+file(READ ${OUT}/other-revision/results.json text)
+string(JSON text SET "${text}" lightcts_revision "\"0000000-not-this-one\"")
+file(WRITE ${OUT}/other-revision/results.json "${text}")
+refused_merge("different lightcts revisions" ${OUT}/shard-1 ${OUT}/other-revision ${OUT}/shard-3)
+# ... from another driver build, and over other scenes.
+file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-driver)
+file(READ ${OUT}/shard-2/results.json text)
+string(JSON text SET "${text}" backends 0 device driver_version "\"99.0.0-another-build\"")
+file(WRITE ${OUT}/other-driver/results.json "${text}")
+refused_merge("different drivers on " ${OUT}/shard-1 ${OUT}/other-driver ${OUT}/shard-3)
+file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-scenes)
+file(READ ${OUT}/shard-2/results.json text)
+string(JSON text SET "${text}" scenes_digest "\"0123\"")
+file(WRITE ${OUT}/other-scenes/results.json "${text}")
+refused_merge("different scene sets" ${OUT}/shard-1 ${OUT}/other-scenes ${OUT}/shard-3)
+refused_merge("shard 2/3 is missing" ${OUT}/shard-1 ${OUT}/shard-3)
+refused_merge("shard 3/3 is given twice" ${shards} ${OUT}/shard-3)
+refused_merge("different partitions" ${OUT}/shard-1 ${OUT}/balanced-2 ${OUT}/shard-3)
+refused_merge("not a shard" ${OUT}/whole)
+lightcts(2 run ${ARGS} --shard 4/3 --out ${OUT}/bad-shard)
