@@ -17,6 +17,11 @@ struct BackendCombination {
   // softpipe renders about 150 times slower than llvmpipe: benchmarks and
   // long tests scale down there.
   bool isSlowDriver() const { return driver == "softpipe"; }
+  // OSMesa reaches the same Mesa driver as EGL through another context
+  // (client memory instead of a pbuffer): a second path to a driver that
+  // gl-egl and gl-egl-softpipe already time, so the bench times its profile
+  // modes only (docs/bench-format.md).
+  bool isSecondContextPath() const { return backend == "gl-osmesa"; }
   // The suffix as a C++ identifier (gtest parameter names): '-' becomes '_'.
   std::string identifier() const;
 };

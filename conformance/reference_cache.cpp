@@ -155,6 +155,7 @@ std::string referenceCacheKey(const std::string& sceneDigest, int frame, const r
   w.boolean(options.bakedLightsRealtime);
   w.f64(options.filterWeightPrecision);
   w.boolean(options.keepShadowIntervals);
+  w.boolean(options.valueOnly);  // no tolerance in it
   return baking::toHex(baking::sha256(w.bytes().data(), w.bytes().size()));
 }
 

@@ -412,13 +412,14 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
             compared = false;
             continue;
           }
+          if (options.valueOnly) continue;
           const Shaded shifted = shading.shade(*shiftedHit);
           rowEvaluations += shifted.evaluations;
           shiftChange = glm::max(shiftChange, glm::abs(shifted.value - value));
           interpolation = glm::max(interpolation, shifted.interpolation);
         }
       }
-      const Vec3 tolerance = tol::pixelTolerance(value, bound, shiftChange, interpolation);
+      const Vec3 tolerance = options.valueOnly ? Vec3(0.0) : tol::pixelTolerance(value, bound, shiftChange, interpolation);
       if (options.keepExactValues) out.exactValue[k] = value;
       if (options.keepToleranceTerms) {
         const Vec3 arithmetic = tol::pixelTolerance(value, bound, Vec3(0.0), interpolation);

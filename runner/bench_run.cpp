@@ -271,7 +271,11 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   common.insert(common.end(), quick.begin(), quick.end());
   // The ideal references (untimed) are the same for every combination's
   // scenes: the first process to need one renders it, the others read it.
-  common.push_back("--ideal_cache=" + (rawDir / "ideal").string());
+  // Their files are keyed by name, not by the code that made them, so they
+  // are this run's alone: an earlier run's in the same folder go first.
+  const fs::path idealDir = rawDir / "ideal";
+  fs::remove_all(idealDir);
+  common.push_back("--ideal_cache=" + idealDir.string());
 
   std::vector<std::string> prepareArgs = {"prepare"};
   prepareArgs.insert(prepareArgs.end(), quick.begin(), quick.end());

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace reference {
 namespace {
@@ -167,6 +169,36 @@ TEST(ReferenceRenderer, IdealIgnoresTheBudget) {
   // (4.5, 3.5) is column (4.5 + 6.67) / 13.33 * 32 = 26.8, row (3.5 + 5) / 10 * 24 = 20.4.
   EXPECT_EQ(budget.value.at(26, 20, 0), 0.0f);
   EXPECT_GT(ideal.value.at(26, 20, 0), 0.1f);
+}
+
+// The benchmarks' baseline (valueOnly): the same value and mask, bit for bit,
+// as a full ideal render, with silhouettes (masked by the traced shifts) and
+// 65 lights in view, no tolerance, and one shading a pixel instead of five.
+TEST(ReferenceRenderer, ValueOnlyKeepsValueAndMaskBitForBit) {
+  Scene s = smallScene();
+  s.image = {40, 40};
+  s.objects.push_back(plane(20));
+  s.objects.push_back(plane(2, {0.125, 0.3, 0}));  // silhouettes over the floor
+  for (int k = 0; k < 65; ++k) s.lights.push_back(point({-3 + 0.1 * (k % 8), 1 + 0.05 * (k / 8), -3 + 0.1 * (k / 8)}, 6));
+  auto prepared = prepareScene(s);
+  const ReferenceRenderer renderer(prepared);
+  const Frame frame = prepareFrame(prepared, 0);
+  const ReferenceImages full = renderer.render(frame, {.ideal = true});
+  const ReferenceImages value = renderer.render(frame, {.ideal = true, .valueOnly = true});
+  ASSERT_EQ(value.value.pixels.size(), full.value.pixels.size());
+  int masked = 0;
+  for (std::size_t k = 0; k < full.value.pixels.size(); ++k) {
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(value.value.pixels[k]), std::bit_cast<std::uint32_t>(full.value.pixels[k]))
+        << "float " << k;
+    masked += k % 4 == 3 && full.value.pixels[k] == 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(masked, 0) << "the scene has masked pixels";
+  EXPECT_EQ(value.maskedPixels, full.maskedPixels);
+  for (const float t : value.tolerance.pixels) ASSERT_EQ(t, 0.0f);
+  // Five shadings a compared pixel in the full render (centre and four
+  // shifts), one here.
+  EXPECT_LT(5 * value.lightEvaluations, full.lightEvaluations + full.lightEvaluations / 10);
+  EXPECT_GT(value.lightEvaluations, 0);
 }
 
 }  // namespace

@@ -37,6 +37,9 @@ TEST(CombinationTable, LookUps) {
   ASSERT_NE(findCombination("gl-osmesa-softpipe"), nullptr);
   EXPECT_EQ(findCombination("gl-osmesa-softpipe")->backend, "gl-osmesa");
   EXPECT_TRUE(findCombination("gl-osmesa-softpipe")->isSlowDriver());
+  // The bench's second paths to a driver: OSMesa beside EGL, for both drivers.
+  for (const char* second : {"gl-osmesa", "gl-osmesa-softpipe"}) EXPECT_TRUE(findCombination(second)->isSecondContextPath());
+  for (const char* first : {"vulkan", "gl-egl", "gl-egl-softpipe"}) EXPECT_FALSE(findCombination(first)->isSecondContextPath());
   EXPECT_EQ(findCombination("metal"), nullptr);
   // The default driver of a GL backend is llvmpipe; Vulkan has one combination.
   EXPECT_EQ(findCombination("gl-egl", "")->suffix, "gl-egl");

@@ -21,8 +21,8 @@
 namespace bench {
 
 // The 64-light field's size (issue 20, the bench's budgets): 1280x720, the
-// size every number of docs/performance.md is of; 640x360 on a slow driver
-// (softpipe: a quarter of the pixels, seconds a frame); 320x180 with --quick,
+// size every number of docs/performance.md is of; 320x180 on a slow driver
+// (softpipe: a sixteenth of the pixels, still seconds a frame); 320x180 with --quick,
 // which proves each mode runs and measures nothing (160x90 on a slow driver). Its scene name,
 // `lights64-<W>x<H>`, says which, in every benchmark name.
 struct FieldSize {
@@ -49,8 +49,10 @@ struct FieldModeSpec {
   bool fullShader = false;
 };
 // The field's modes in the order they are registered, in the set of a run
-// with --quick (`quick`) or on a slow driver (`slow`).
-std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow);
+// with --quick (`quick`), on a slow driver (`slow`) or on a second context
+// path to a driver (`lightPathsOnly`: all-lights, per-object, legacy-4+4 and
+// the deferred modes).
+std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPathsOnly = false);
 
 // The field's frames by mode name, made (and their loads traced) up front.
 using NamedFrames = std::vector<std::pair<std::string, std::shared_ptr<const BenchFrame>>>;
@@ -58,7 +60,7 @@ struct FieldModes {
   NamedFrames shipped, full, pipeline;  // specialised shaders, full shader, pipeline benchmarks
 };
 FieldModes fieldModes(const RunState& run);
-// frame and (but on a slow driver) frame_readback of each.
+// frame of each and (but on a slow driver) frame_readback of the light-path modes.
 void registerFieldModes(Registrar& r, const NamedFrames& frames);
 void registerFieldPipelines(Registrar& r, const NamedFrames& frames);
 

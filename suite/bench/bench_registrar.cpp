@@ -40,7 +40,9 @@ bool makeOnce(benchmark::State& st, Made& made, const Make& make) {
 
 // --quick proves each benchmark runs and measures nothing (issue 20): one
 // iteration, one repetition, on every driver. A slow driver (softpipe,
-// seconds a frame): one iteration, 3 repetitions.
+// seconds a frame): one iteration, 3 repetitions. Otherwise 5: with 3
+// against 3, `lightcts bench compare`'s Mann-Whitney U is never significant
+// (its smallest p is 0.1), so no slowdown could ever be shown.
 Registrar::Registrar(std::shared_ptr<RunState> run) : run_(std::move(run)) {
   if (run_->settings.quick) {
     frameTiming_ = pipelineTiming_ = {1, 0, 1};
@@ -64,7 +66,9 @@ std::string Registrar::name(const char* kind, const std::string& scene, const st
 void Registrar::frame(const std::string& scene, const std::string& mode, const std::string& x,
                       const std::shared_ptr<const BenchFrame>& bench, bool withReadback) {
   auto run = run_;
-  configure(benchmark::RegisterBenchmark(name(withReadback ? "frame_readback" : "frame", scene, mode, x).c_str(),
+  const std::string benchmarkName = name(withReadback ? "frame_readback" : "frame", scene, mode, x);
+  if (!bench->spec.referenceKey.empty()) errorCandidates_.push_back({benchmarkName, bench});
+  configure(benchmark::RegisterBenchmark(benchmarkName.c_str(),
                                          [run, bench, withReadback](benchmark::State& st) {
                                            timeFrame(st, *run, *bench, withReadback);
                                          }),
@@ -74,7 +78,9 @@ void Registrar::frame(const std::string& scene, const std::string& mode, const s
 void Registrar::lazyFrame(const std::string& scene, const std::string& mode, MakeBench make) {
   auto run = run_;
   auto made = std::make_shared<std::shared_ptr<const BenchFrame>>();
-  configure(benchmark::RegisterBenchmark(name("frame", scene, mode, "").c_str(),
+  const std::string benchmarkName = name("frame", scene, mode, "");
+  errorCandidates_.push_back({benchmarkName, nullptr, made, make});  // every lazy frame has an error
+  configure(benchmark::RegisterBenchmark(benchmarkName.c_str(),
                                          [run, made, make = std::move(make)](benchmark::State& st) {
                                            if (makeOnce(st, *made, make)) timeFrame(st, *run, **made, false);
                                          }),

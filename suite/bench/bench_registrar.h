@@ -5,11 +5,13 @@
 #pragma once
 
 #include "suite/bench/bench_frame.h"
+#include "suite/bench/error_prepass.h"
 #include "suite/bench/run_state.h"
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace bench {
 
@@ -43,12 +45,16 @@ class Registrar {
   void upload(const std::string& scene, const std::string& mode, const std::string& x, MakeFrame make);
 
   const RunState& run() const { return *run_; }
+  // The frame benchmarks with error counters, in registration order: what
+  // precomputeErrors may compute before the timed runs.
+  const std::vector<ErrorCandidate>& errorCandidates() const { return errorCandidates_; }
 
  private:
   std::string name(const char* kind, const std::string& scene, const std::string& mode, const std::string& x) const;
 
   std::shared_ptr<RunState> run_;
-  Timing frameTiming_, pipelineTiming_;  // upload: pipelineTiming_ (Google Benchmark's count, also on softpipe)
+  Timing frameTiming_, pipelineTiming_;
+  std::vector<ErrorCandidate> errorCandidates_;  // upload: pipelineTiming_ (Google Benchmark's count, also on softpipe)
 };
 
 }  // namespace bench

@@ -5,7 +5,7 @@
 //                                                with the full shader (full-shader = all-lights);
 //                                                the srp-brdf modes; cookie-lights and cookies
 //                                                (cookies off and on); deferred-hdr32, -hdr16, -ldr8
-//   frame_readback/<b>/lights64-1280x720/<mode>
+//   frame_readback/<b>/lights64-1280x720/<mode>  the light-path modes: all-lights, per-object, legacy-4+4, deferred-*
 //   pipeline/<b>/lights64-1280x720/<mode>         preparePipeline with an empty cache
 //   upload/<b>/lights64-1280x720/cookies/<n>      prepareTextures of a fresh copy of the cookie
 //                                                field, n x n cookies: n = 64, 256, 1024 (--quick: 256)
@@ -19,6 +19,11 @@
 //                                                with bake_ms; error against the lights in real time
 //   frame/<b>/lightmap-1280x720/realtime          the same lights in real time
 //   frame/<b>/lightmap-shadow-1280x720/<mode>     the same with one shadowed light: realtime, lightmap-64, -512
+// frame_readback times the light-path modes only (all-lights, per-object,
+// legacy-4+4, deferred-*): a readback's cost does not depend on the mode. The
+// shadow-map and full-shader modes repeat 3 times, the others 5. A second
+// context path to a driver (gl-osmesa, gl-osmesa-softpipe: OSMesa beside
+// EGL) runs the field's light-path modes and the all-lights pipeline only.
 // A slow driver (softpipe, about 150 times slower than llvmpipe) runs a
 // scaled-down set: the 64-light field in every mode but full-shader
 // all-lights, `frame` only, one iteration times 3 repetitions, and the curves
@@ -36,6 +41,7 @@
 #include "suite/bench/bench_registrar.h"
 #include "suite/bench/bench_reporters.h"
 #include "suite/bench/bench_settings.h"
+#include "suite/bench/error_prepass.h"
 #include "suite/bench/lighting_cost.h"
 #include "suite/bench/run_state.h"
 #include "suite/bench/time_source.h"
@@ -44,6 +50,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -66,26 +73,35 @@ void addDeviceContext(const RunState& run) {
   benchmark::AddCustomContext("frame_bench.set", set + (run.settings.quick ? ", quick" : ""));
 }
 
-// Google Benchmark runs them in this order. A GL backend makes its context
-// current when it is created and never again, and a destroyed one leaves
-// none current: so every benchmark of the shipped-shader backend first, then
-// full-shader (its backend is created on first use), then pipeline (a fresh
-// backend per iteration). The cookie uploads use the shipped-shader backend
+// Google Benchmark runs them in this order: every benchmark of the
+// shipped-shader backend first, then full-shader (its backend is created on
+// first use, by the error prepass when it runs), then pipeline (a fresh
+// backend per iteration; a GL backend makes its context current on every
+// call, so none of them depends on what another left current). The cookie uploads use the shipped-shader backend
 // too: last of its benchmarks.
-void registerAll(const std::shared_ptr<RunState>& run) {
+// Returns the frames whose errors the prepass may compute.
+std::vector<ErrorCandidate> registerAll(const std::shared_ptr<RunState>& run) {
   Registrar registrar(run);
   const FieldModes field = fieldModes(*run);
   registerFieldModes(registrar, field.shipped);
+  if (run->secondContextPath()) {
+    // The driver's features and curves are timed on its first path (gl-egl,
+    // gl-egl-softpipe); this path adds its light-path frames and a pipeline.
+    registerFieldPipelines(registrar, field.pipeline);
+    return registrar.errorCandidates();
+  }
   registerLightmapModes(registrar);
   registerCurves(registrar);
   if (run->settings.suiteScenes) registerSuiteScenes(registrar);
   registerCookieUploads(registrar);  // the shipped-shader backend's last: the draws after it warm up again
   registerFieldModes(registrar, field.full);
   registerFieldPipelines(registrar, field.pipeline);
+  return registrar.errorCandidates();
 }
 
-// Google Benchmark reads `arguments` (argv[0] first) and runs what is registered.
-int runRegistered(std::vector<char*> arguments) {
+// Google Benchmark reads `arguments` (argv[0] first) and runs what is
+// registered; `beforeRun` once the flags are read (the filter is known).
+int runRegistered(std::vector<char*> arguments, const std::function<void()>& beforeRun) {
   const std::vector<std::string_view> flags(arguments.begin() + 1, arguments.end());
   const Reporters reporters = plainNameReporters(flags);
   int count = int(arguments.size());
@@ -93,6 +109,7 @@ int runRegistered(std::vector<char*> arguments) {
   benchmark::Initialize(&count, arguments.data());
   int status = kExitBadInput;
   if (!benchmark::ReportUnrecognizedArguments(count, arguments.data())) {
+    beforeRun();
     benchmark::RunSpecifiedBenchmarks(reporters.display.get(), reporters.file.get());
     status = kExitSuccess;
   }
@@ -155,14 +172,17 @@ int runFrameBenchmarks(int argc, char** argv) {
   if (run->settings.peakGflops)
     benchmark::AddCustomContext("frame_bench.peak_gflops", std::to_string(*run->settings.peakGflops));
 
+  std::vector<ErrorCandidate> errorCandidates;
   try {
-    registerAll(run);
+    errorCandidates = registerAll(run);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "render_bench: preparing the benchmark scenes failed: %s\n", e.what());
     cleanUp();
     return kExitInternalError;
   }
-  const int status = runRegistered(std::move(flags.rest));
+  // The errors first, on every core, untimed (suite/bench/error_prepass.h).
+  const int status = runRegistered(std::move(flags.rest),
+                                   [&] { precomputeErrors(*run, errorCandidates, benchmark::GetBenchmarkFilter()); });
   cleanUp();
   return status;
 }

@@ -72,7 +72,8 @@ const imaging::Image& RunState::idealFor(const BenchFrame& bench) {
     if (std::optional<imaging::Image> cached = readIdeal(cacheFile))
       it = ideal.emplace(spec.referenceKey, std::move(*cached)).first;
   if (it == ideal.end()) {
-    const reference::ReferenceOptions idealOptions{.ideal = true};
+    // The error baseline needs the value and its mask, not the tolerance.
+    const reference::ReferenceOptions idealOptions{.ideal = true, .valueOnly = true};
     if (spec.referencePrepared) {
       const reference::ReferenceRenderer renderer(spec.referencePrepared);
       const lighting::Frame frame = lighting::prepareFrame(spec.referencePrepared, bench.frame.index);

@@ -34,6 +34,7 @@ struct RunState {
   const std::string& suffix() const { return settings.combination->suffix; }
   // A slow driver (softpipe): the scaled-down set.
   bool slow() const { return settings.combination->isSlowDriver(); }
+  bool secondContextPath() const { return settings.combination->isSecondContextPath(); }
 
   // The backend object shared by every draw benchmark of its shader variant.
   backends::Backend& backendFor(const BenchFrame& bench);

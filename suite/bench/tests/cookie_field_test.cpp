@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace {
@@ -133,6 +134,15 @@ TEST(CookieField, UploadSizesFitTheSlots) {
   EXPECT_TRUE(frame.features.cookies);
   EXPECT_EQ(frame.cookies.overflow, "");
   EXPECT_EQ(frame.scene().lights.back().cookie->images.front()->width, field.cookieSize);
+}
+
+// The second context path to a driver (gl-osmesa) times the light paths only:
+// no feature modes, no full shader.
+TEST(FieldModes, SecondContextPathHasTheLightPathModesOnly) {
+  std::set<std::string> names;
+  for (const bench::FieldModeSpec& mode : bench::fieldModeSpecs(false, false, true)) names.insert(mode.name);
+  EXPECT_EQ(names, (std::set<std::string>{"all-lights", "per-object", "legacy-4+4", "deferred-hdr32", "deferred-hdr16",
+                                          "deferred-ldr8"}));
 }
 
 }  // namespace
