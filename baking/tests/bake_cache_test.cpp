@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -19,8 +20,11 @@ namespace fs = std::filesystem;
 class BakeCacheTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-bake-cache-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    // A parameterised test's name is "Name/param": one folder, not a
+    // folder in a folder that TearDown would leave behind.
+    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::replace(name.begin(), name.end(), '/', '-');
+    dir_ = fs::temp_directory_path() / ("lightcts-bake-cache-" + std::to_string(::getpid()) + "-" + name);
     fs::remove_all(dir_);
     options_.cacheDirectory = (dir_ / "bakes").string();
   }
