@@ -67,7 +67,7 @@ void Registrar::frame(const std::string& scene, const std::string& mode, const s
                       const std::shared_ptr<const BenchFrame>& bench, bool withReadback) {
   auto run = run_;
   const std::string benchmarkName = name(withReadback ? "frame_readback" : "frame", scene, mode, x);
-  if (!bench->spec.referenceKey.empty()) errorCandidates_.push_back({benchmarkName, bench});
+  if (!bench->spec.referenceKey.empty()) errorCandidates_.push_back({benchmarkName, bench, nullptr, nullptr});
   configure(benchmark::RegisterBenchmark(benchmarkName.c_str(),
                                          [run, bench, withReadback](benchmark::State& st) {
                                            timeFrame(st, *run, *bench, withReadback);

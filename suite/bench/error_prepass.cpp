@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <future>
+#include <map>
 #include <optional>
 #include <regex>
 #include <semaphore>
@@ -30,6 +31,9 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
   std::counting_semaphore<> slots(workers);  // images waiting for or in compare_Yee, at most one per core
   std::vector<std::pair<std::string, std::future<std::optional<ImageError>>>> pending;
   std::set<std::string> queued;
+  std::map<std::string, std::size_t> inFlight;                // content key -> index in pending
+  std::vector<std::string> contents;                          // per pending: its content key
+  std::vector<std::pair<std::string, std::size_t>> sharing;  // error key -> the pending it equals
   // The lazy frames first: their bakes are timed (bake_ms), so nothing else runs yet.
   std::vector<std::shared_ptr<const BenchFrame>> frames;
   for (const ErrorCandidate& candidate : candidates) {
@@ -57,6 +61,20 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
       backend.draw(bench.frame);
       run.lastDrawn[&backend] = &bench;
       imaging::Image image = backend.readback();
+      // A frame read back bit for bit like an earlier one (here or in another
+      // frame process of the run) has its error already, or soon.
+      const std::string content = RunState::contentKey(bench.spec.referenceKey, image);
+      if (const std::optional<ImageError> known = run.errorByContent(content)) {
+        run.errors.emplace(key, *known);
+        continue;
+      }
+      if (const auto same = inFlight.find(content); same != inFlight.end()) {
+        sharing.emplace_back(key, same->second);
+        queued.insert(key);
+        continue;
+      }
+      inFlight.emplace(content, pending.size());
+      contents.push_back(content);
       slots.acquire();
       try {
         pending.emplace_back(key, std::async(std::launch::async, [&slots, &ideal, image = std::move(image)] {
@@ -71,6 +89,8 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
                              }));
       } catch (...) {
         slots.release();
+        inFlight.erase(content);
+        contents.pop_back();
         throw;
       }
       queued.insert(key);
@@ -78,8 +98,15 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
       // The benchmark draws it again and reports the failure as its own.
     }
   }
-  for (auto& [key, future] : pending)
-    if (std::optional<ImageError> error = future.get()) run.errors.emplace(key, *error);
+  std::vector<std::optional<ImageError>> results;
+  for (std::size_t p = 0; p < pending.size(); ++p) {
+    results.push_back(pending[p].second.get());
+    if (!results.back()) continue;
+    run.errors.emplace(pending[p].first, *results.back());
+    run.keepErrorByContent(contents[p], *results.back());
+  }
+  for (const auto& [key, p] : sharing)
+    if (results[p]) run.errors.emplace(key, *results[p]);
 }
 
 }  // namespace bench

@@ -13,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace bench {
@@ -43,6 +44,17 @@ struct RunState {
   // The error of `bench` against its ideal reference, computed from
   // `readback()` the first time its key is asked for.
   const ImageError& errorFor(const BenchFrame& bench, const std::function<imaging::Image()>& readback);
+
+  // Frames that read back bit for bit the same have the same error (the
+  // full-shader modes and their specialised ones, per-object and all-lights
+  // on the field, gl-osmesa and gl-egl): errors are also kept by content, the
+  // ideal's key and an XXH3-128 of the image, in memory and as a file beside
+  // the ideal cache's (shared by the run's frame processes), so compare_Yee
+  // runs once per distinct image.
+  static std::string contentKey(const std::string& referenceKey, const imaging::Image& image);
+  std::optional<ImageError> errorByContent(const std::string& contentKey) const;
+  void keepErrorByContent(const std::string& contentKey, const ImageError& error);
+  std::map<std::string, ImageError> errorsByContent;
 };
 
 // The pipeline benchmarks must measure a real compile, not a hit in the
