@@ -6,13 +6,11 @@
 #include <xxhash.h>
 
 #include <cstdint>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <optional>
 #include <string>
-
-#include <cstdlib>
 #include <system_error>
 #include <unistd.h>
 
