@@ -6,6 +6,7 @@
 #include "conformance/reference_cache.h"
 #include "runner/suite_worker.h"
 
+#include <filesystem>
 #include <fstream>
 #include <ostream>
 #include <stdexcept>
@@ -37,6 +38,12 @@ int runMergeCommand(const runner::MergeOptions& options, std::ostream& out, std:
 bool stdoutIsTerminal() { return ::isatty(STDOUT_FILENO) == 1; }
 
 std::string referenceCacheDirectory() { return conformance::defaultReferenceCacheDirectory().string(); }
+
+// Beside the references: $LIGHTCTS_CACHE_DIR/bench-errors (docs/bench-format.md).
+std::string benchErrorCacheDirectory() {
+  const std::filesystem::path references = conformance::defaultReferenceCacheDirectory();
+  return references.empty() ? std::string() : (references.parent_path() / "bench-errors").string();
+}
 
 bool parseShardArgument(const std::string& text, runner::RunOptions& options, std::ostream& err) {
   try {

@@ -88,6 +88,8 @@ int runMergeCommand(const runner::MergeOptions& options, std::ostream& out, std:
 // `err`, when it is not I/N with 1 <= I <= N).
 bool stdoutIsTerminal();
 std::string referenceCacheDirectory();
+// Where `bench` keeps its errors across runs; "" when no cache folder is known.
+std::string benchErrorCacheDirectory();
 bool parseShardArgument(const std::string& text, runner::RunOptions& options, std::ostream& err);
 // The hidden `lightcts worker` command that `run` starts (runner/suite_worker.h).
 int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, std::ostream& err);

@@ -135,6 +135,9 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--scenes", bench.scenesDir, "Scene folder")->default_val("suite/scenes");
   benchCmd->add_flag("--quick", bench.quick, "Fewer points and repetitions (a smoke test, not a measurement)");
   benchCmd->add_option("--timeout", bench.timeoutSeconds, "Seconds one benchmark process may take")->default_val(900);
+  bool freshErrors = false;
+  benchCmd->add_flag("--fresh-errors", freshErrors,
+                     "Compute every error in this run, not from the errors kept by earlier runs");
   auto* benchCompareCmd = benchCmd->add_subcommand("compare", "Compare two bench.json files with a U-test");
   benchCompareCmd->add_option("files", compareFiles, "BEFORE.json AFTER.json")->required()->expected(2);
 
@@ -195,6 +198,7 @@ int main(int argc, char** argv) {
       e << "lightcts: bench: --out is required\n";
       return app::kExitBadInput;
     }
+    if (!freshErrors) bench.errorCache = app::benchErrorCacheDirectory();
     bench.workerExecutable = "/proc/self/exe";
     for (int i = 0; i < argc; ++i) bench.commandLine += (i ? " " : "") + std::string(argv[i]);
     return app::runBenchCommand(bench, o, e);

@@ -276,6 +276,8 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   const fs::path idealDir = rawDir / "ideal";
   fs::remove_all(idealDir);
   common.push_back("--ideal_cache=" + idealDir.string());
+  // The errors, by content and the code's fingerprint, are every run's.
+  if (!options.errorCache.empty()) common.push_back("--error_cache=" + fs::absolute(options.errorCache).string());
 
   std::vector<std::string> prepareArgs = {"prepare"};
   prepareArgs.insert(prepareArgs.end(), quick.begin(), quick.end());

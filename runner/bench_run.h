@@ -20,6 +20,9 @@ struct BenchOptions {
   std::string scenesDir = "suite/scenes";
   bool quick = false;                 // fewer points and repetitions (smoke tests)
   double timeoutSeconds = 900;        // per benchmark process
+  // The errors kept across runs (frame processes' --error_cache); "" for
+  // none (`--fresh-errors`): this run's errors only, in raw/ideal.
+  std::string errorCache;
   std::string workerExecutable;       // the lightcts binary (/proc/self/exe)
   std::string commandLine;
 };

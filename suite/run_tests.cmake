@@ -78,9 +78,12 @@ set_tests_properties(run.real-run-report-images-load-in-chromium PROPERTIES LABE
 # pages are written, and every plot renders in headless Chromium
 # (reports/tests/check_svgs_render.sh; exit 77, a skip, without Chromium).
 # A smoke test of the wiring, never a measurement: speed is not asserted.
+# --fresh-errors: every run computes its ideals and errors (the errors kept
+# across runs have a test of their own, bench.error-cache-smoke).
 set(bench_out ${CMAKE_BINARY_DIR}/test-out/bench-quick)
 add_test(NAME bench.command-quick
-         COMMAND lightcts bench --quick --backend vulkan --scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes --out ${bench_out})
+         COMMAND lightcts bench --quick --fresh-errors --backend vulkan --scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes
+                 --out ${bench_out})
 set_tests_properties(bench.command-quick PROPERTIES LABELS "bench;vulkan" FIXTURES_SETUP bench-quick
   SKIP_RETURN_CODE 3 TIMEOUT 300 COST 89)  # COST: started first (suite/bench/CMakeLists.txt says why)
 add_test(NAME bench.command-quick-plots-render-in-chromium

@@ -85,6 +85,7 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
     else if (i > 0 && startsWith(a, "--driver=", value)) settings.driver = std::string(value);
     else if (i > 0 && startsWith(a, "--scenes=", value)) settings.scenes = std::filesystem::path(value);
     else if (i > 0 && startsWith(a, "--ideal_cache=", value)) settings.idealCache = std::filesystem::path(value);
+    else if (i > 0 && startsWith(a, "--error_cache=", value)) settings.errorCache = std::filesystem::path(value);
     else if (i > 0 && startsWith(a, "--peak_gflops=", value)) {
       char* end = nullptr;
       const std::string text(value);
@@ -108,6 +109,7 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
     else if (i > 0 && a == "--suite_scenes") settings.suiteScenes = true;
     else parsed.rest.push_back(argv[i]);
   }
+  if (settings.suiteScenes) settings.errorCache.clear();
   parsed.usageError = checkCombination(settings);
   return parsed;
 }

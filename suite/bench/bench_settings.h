@@ -25,6 +25,14 @@ struct Settings {
   // combination, read from DIR when an earlier process of the run left them
   // there, else rendered and left there (`lightcts bench` passes raw/ideal).
   std::filesystem::path idealCache;
+  // --error_cache=DIR: the err_* counters kept across runs (issue 20),
+  // under DIR/<fingerprint of the code they depend on>, each file named by
+  // the ideal's key and an XXH3-128 of the read-back image, so a later run
+  // whose frame is bit for bit the same reads its error instead of running
+  // compare_Yee, and renders no ideal for it. Empty: the errors are kept
+  // beside the ideals (this run's alone). Ignored with --suite_scenes: a
+  // suite scene's key is its name, not its content.
+  std::filesystem::path errorCache;
   // --mutant (tests only): every backend draws this deliberately wrong
   // variant (shaders/shader_variant.h), so a test can time a broken mode.
   shaders::Mutant mutant = shaders::Mutant::None;

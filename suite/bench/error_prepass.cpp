@@ -55,7 +55,6 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
         !filterSelects(filter, candidate.name))
       continue;
     try {
-      const imaging::Image& ideal = run.idealFor(bench);  // std::map: stays where it is
       backends::Backend& backend = run.backendFor(bench);
       backend.preparePipeline(bench.frame);
       backend.draw(bench.frame);
@@ -73,6 +72,8 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
         queued.insert(key);
         continue;
       }
+      // The ideal only now: a known error needs none (--error_cache).
+      const imaging::Image& ideal = run.idealFor(bench);  // std::map: stays where it is
       inFlight.emplace(content, pending.size());
       contents.push_back(content);
       slots.acquire();

@@ -55,7 +55,6 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
   try {
     backends::Backend& backend = run.backendFor(bench);
     const bool withError = !bench.spec.referenceKey.empty();
-    if (withError) run.idealFor(bench);  // rendered now, untimed, then cached
     backend.preparePipeline(bench.frame);
     // Repetitions call this again: the warm-up draw is needed only when
     // another frame was drawn on this backend since; --quick times nothing
@@ -90,6 +89,8 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
       c["shadow_pass_ms"] = benchmark::Counter(shadowMs, benchmark::Counter::kAvgIterations);
     setLoadCounters(state, run, bench.load, bench.frame.features.specularBrdf);
     // One readback per draw: frame_readback's last image when it has one.
+    // The error (and its ideal, when it is not known yet) after the timed
+    // loop: untimed, and before the next benchmark starts.
     const auto lastImage = [&] { return image.pixels.empty() ? backend.readback() : std::move(image); };
     if (withError) setErrorCounters(state, run.errorFor(bench, lastImage));
     if (bench.spec.bake) setBakeCounters(state, bench);

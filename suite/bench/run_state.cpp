@@ -2,12 +2,16 @@
 
 #include "imaging/atomic_file.h"
 #include "reference/reference_renderer.h"
+#include "suite/bench/error_fingerprint.h"
+
+#include <OpenImageIO/oiioversion.h>
 
 #include <xxhash.h>
 
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -117,16 +121,25 @@ std::string RunState::contentKey(const std::string& referenceKey, const imaging:
 
 namespace {
 
-fs::path errorFile(const fs::path& idealCache, const std::string& contentKey) {
-  return idealCacheFile(idealCache, contentKey).replace_extension(".error");
+// Where an error of this content is kept: under --error_cache, in the
+// folder of this build's sources and OpenImageIO's version (compare_Yee's
+// code), else beside this run's ideals; empty when neither is given.
+fs::path errorFile(const Settings& settings, const std::string& contentKey) {
+  if (!settings.errorCache.empty()) {
+    const std::string folder = std::string(kErrorSourceFingerprint).append("-oiio-").append(OIIO_VERSION_STRING);
+    return idealCacheFile(settings.errorCache / folder, contentKey).replace_extension(".error");
+  }
+  if (settings.idealCache.empty()) return {};
+  return idealCacheFile(settings.idealCache, contentKey).replace_extension(".error");
 }
 
 }  // namespace
 
 std::optional<ImageError> RunState::errorByContent(const std::string& key) const {
   if (auto it = errorsByContent.find(key); it != errorsByContent.end()) return it->second;
-  if (settings.idealCache.empty()) return std::nullopt;
-  std::ifstream in(errorFile(settings.idealCache, key));
+  const fs::path file = errorFile(settings, key);
+  if (file.empty()) return std::nullopt;
+  std::ifstream in(file);
   std::string fields[7];
   for (std::string& f : fields)
     if (!(in >> f)) return std::nullopt;
@@ -145,13 +158,18 @@ std::optional<ImageError> RunState::errorByContent(const std::string& key) const
 
 void RunState::keepErrorByContent(const std::string& key, const ImageError& e) {
   errorsByContent[key] = e;
-  if (settings.idealCache.empty()) return;
+  const fs::path file = errorFile(settings, key);
+  if (file.empty()) return;
   char text[512];
   std::snprintf(text, sizeof text, "%.17g %.17g %.17g %.17g %.17g %lld %lld\n", e.rmse, e.maxAbs, e.peak, e.psnrDb,
                 e.perceptualFail, static_cast<long long>(e.comparedPixels), static_cast<long long>(e.nonFinitePixels));
-  const fs::path file = errorFile(settings.idealCache, key);
-  fs::create_directories(file.parent_path());
-  imaging::writeFileAtomically(file, text);  // processes at once may write the same key: each whole
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);  // a file that cannot be kept costs a compare_Yee later, nothing else
+  try {
+    imaging::writeFileAtomically(file, text);  // processes at once may write the same key: each whole
+  } catch (const std::exception&) {
+    // not kept: a later run computes it again
+  }
 }
 
 void useFreshPipelineCache(RunState& run) {
