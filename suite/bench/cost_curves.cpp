@@ -26,17 +26,16 @@ std::string sizeName(int width, int height) { return std::to_string(width) + "x"
 void registerCurves(Registrar& r) {
   const RunState& run = r.run();
   const bool quick = run.settings.quick;
-  // The light and object curves at 640x360 (a quarter of the field's
-  // pixels, to fit the time budget), at 256x144 with --quick (a smoke run:
-  // that every curve draws, not what it costs) and at 128x72 on a slow
-  // driver, a softpipe frame costing about a second at 256x144 (issue 20:
-  // the full bench's 10 minutes).
   // A slow driver's full set has no curves (issue 20: softpipe's share of
   // the full bench's 10 minutes): how a reference rasterizer's time grows
   // with lights, objects and pixels tells a reader nothing about a renderer,
   // and its field modes keep its errors. Its --quick run still draws each.
   if (run.slow() && !quick) return;
-  const bool tiny = run.slow();
+  // The light and object curves at 640x360 (a quarter of the field's
+  // pixels, to fit the time budget), at 256x144 with --quick (a smoke run:
+  // that every curve draws, not what it costs) and at 128x72 with --quick
+  // on a slow driver (a softpipe frame cost about a second at 256x144).
+  const bool tiny = run.slow();  // and so --quick
   const bool small = quick && !tiny;
   const int curveWidth = tiny ? 128 : small ? 256 : 640, curveHeight = tiny ? 72 : small ? 144 : 360;
 
@@ -44,12 +43,12 @@ void registerCurves(Registrar& r) {
       quick ? std::vector<int>{1, 64, 256} : std::vector<int>{1, 2, 4, 8, 16, 32, 64, 128, 256};
   // Deferred against forward along the light count: where the volumes
   // (a few per pixel) overtake every kept light per pixel.
-  // On a slow driver the deferred curve in hdr32 alone: the other buffers
-  // draw the same volumes.
+  // With --quick the deferred curve in hdr32 alone: the other buffers draw
+  // the same volumes.
   std::vector<FrameMode> lightModes = {FrameMode::AllLights};
   if (!quick) lightModes.push_back(FrameMode::PerObject);
   lightModes.push_back(FrameMode::DeferredHdr32);
-  if (!quick && !run.slow()) lightModes.insert(lightModes.end(), {FrameMode::DeferredHdr16, FrameMode::DeferredLdr8});
+  if (!quick) lightModes.insert(lightModes.end(), {FrameMode::DeferredHdr16, FrameMode::DeferredLdr8});
   for (const FrameMode mode : lightModes) {
     for (const int n : lightCounts) {
       FieldSpec spec;
@@ -64,10 +63,9 @@ void registerCurves(Registrar& r) {
   }
 
   std::vector<std::pair<int, int>> sizes;
-  if (tiny) sizes = {{64, 36}, {128, 72}, {256, 144}};
-  else if (small) sizes = {{128, 72}, {256, 144}, {512, 288}};
+  if (tiny) sizes = {{64, 36}, {128, 72}};
+  else if (small) sizes = {{128, 72}, {256, 144}};
   else sizes = {{256, 256}, {640, 360}, {1280, 720}, {1920, 1080}};
-  if (quick) sizes.resize(2);
   for (const auto& [w, h] : sizes) {
     FieldSpec spec;
     spec.width = w;

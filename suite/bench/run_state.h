@@ -48,9 +48,10 @@ struct RunState {
   // Frames that read back bit for bit the same have the same error (the
   // full-shader modes and their specialised ones, per-object and all-lights
   // on the field, gl-osmesa and gl-egl): errors are also kept by content, the
-  // ideal's key and an XXH3-128 of the image, in memory and as a file beside
-  // the ideal cache's (shared by the run's frame processes), so compare_Yee
-  // runs once per distinct image.
+  // ideal's key and an XXH3-128 of the image, in memory and as a file: under
+  // --error_cache (every run's, by the sources' fingerprint), else beside the
+  // ideal cache's (this run's frame processes'), so compare_Yee runs once per
+  // distinct image and an ideal is rendered only for an error not known yet.
   static std::string contentKey(const std::string& referenceKey, const imaging::Image& image);
   std::optional<ImageError> errorByContent(const std::string& contentKey) const;
   void keepErrorByContent(const std::string& contentKey, const ImageError& error);
