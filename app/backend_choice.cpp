@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 
 namespace app {
 
@@ -24,6 +26,22 @@ const backends::BackendEntry* resolveBackend(const std::string& name, std::ostre
     status = kExitNotSupported;
   }
   return entry;
+}
+
+std::optional<lighting::ClusterGridSpec> clusteredMode(const BackendArguments& args) {
+  if (args.mode != lighting::kClusteredModeName) return std::nullopt;
+  return lighting::ClusterGridSpec{.tileSize = args.clusterTile, .depthSlices = args.clusterSlices};
+}
+
+lighting::Frame frameInMode(lighting::Frame frame, const BackendArguments& args) {
+  if (const auto spec = clusteredMode(args)) {
+    try {
+      lighting::useLightClusters(frame, *spec);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("--mode clustered: " + std::string(e.what()));
+    }
+  }
+  return frame;
 }
 
 backends::BackendOptions backendOptions(const BackendArguments& args) {

@@ -5,6 +5,9 @@
 
 #include "app/commands.h"
 #include "backends/backend.h"
+#include "lighting/light_clusters.h"
+
+#include <optional>
 
 #include <memory>
 #include <ostream>
@@ -18,6 +21,13 @@ const backends::BackendEntry* resolveBackend(const std::string& name, std::ostre
 // The options a command's arguments ask for. Throws InputError for an
 // unknown mutant.
 backends::BackendOptions backendOptions(const BackendArguments& args);
+
+// The cluster grid of --mode clustered; nullopt for the model's mode.
+std::optional<lighting::ClusterGridSpec> clusteredMode(const BackendArguments& args);
+// `frame` as --mode draws it: the model's frame, or its clustered form.
+// Throws InputError for a scene the clustered mode cannot draw (legacy,
+// deferred, per-object lists) or a grid below 1.
+lighting::Frame frameInMode(lighting::Frame frame, const BackendArguments& args);
 
 // The test's name for this scene and backend: <group>.<name>.<backend> (SPEC 10),
 // with the group the scene file's folder.

@@ -42,7 +42,7 @@ int renderOnBackend(const SceneArguments& args, const BackendArguments& backend,
   if (int status = createBackend(backend, err, renderer); status != kExitSuccess) return status;
   // A CPU mutant alters the frame, as `compare` does (conformance/cpu_mutants.h).
   const shaders::Mutant mutant = backendOptions(backend).variant.mutant;
-  rendered.image = renderer->render(conformance::cpuMutantFrame(rendered.input.frame, mutant));
+  rendered.image = renderer->render(frameInMode(conformance::cpuMutantFrame(rendered.input.frame, mutant), backend));
   return kExitSuccess;
 }
 
@@ -64,6 +64,7 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
                       std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     const SceneInput input = loadSceneInput(args);
+    frameInMode(input.frame, backend);  // a scene the mode cannot draw is bad input (exit 2), before any driver
     std::unique_ptr<backends::Backend> renderer;
     if (int status = createBackend(backend, err, renderer); status != kExitSuccess) return status;
     // Every frame of an animated scene unless --frame picks one (SPEC 10:
@@ -76,6 +77,7 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
     conformance::CheckOptions options;
     if (args.frameGiven) options.onlyFrame = args.frame;
     options.mutant = backendOptions(backend).variant.mutant;
+    options.clustered = clusteredMode(backend);
     const conformance::SceneCheck check = conformance::checkScene(references, *renderer, options);
 
     const std::string name = caseName(args.scenePath, backend);

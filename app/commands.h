@@ -46,6 +46,13 @@ struct BackendArguments {
   // --expect-driver (docs/vendors.md): the loaded device's name, driver or
   // driver version must contain this text, or the command fails (exit 4).
   std::string expectDriver{};
+  // --mode (extension, docs/cli.md): "model", the model as SPEC specifies
+  // it (the default), or "clustered", the Forward+ benchmark mode (issue 21,
+  // lighting/light_clusters.h) with --cluster-tile pixels a tile side and
+  // --cluster-slices depth slices.
+  std::string mode = "model";
+  int clusterTile = 16;
+  int clusterSlices = 16;
 };
 int runRenderCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& outFile,
                      std::ostream& out, std::ostream& err);

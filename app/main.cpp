@@ -4,6 +4,7 @@
 #include "app/exit_status.h"
 #include "backends/backend_combinations.h"
 #include "backends/gl/gl_context.h"
+#include "lighting/light_clusters.h"
 
 #include <CLI/CLI.hpp>
 
@@ -49,6 +50,18 @@ int main(int argc, char** argv) {
     sub->add_flag("--full-shader", backend.fullShader, "Test only: every shader feature on, whatever the scene uses");
     sub->add_option("--expect-driver", backend.expectDriver,
                     "Fail (exit 4) unless the loaded device's name, driver or version contains this text");
+    // Benchmark modes beside the model's (docs/cli.md); never the default.
+    sub->add_option("--mode", backend.mode,
+                    "model (SPEC's light loops, the default) | clustered (Forward+: each pixel loops over its "
+                    "screen tile's and depth slice's lights; srp forward scenes without per-object lists)")
+        ->default_val("model")
+        ->check(CLI::IsMember({std::string("model"), std::string(lighting::kClusteredModeName)}));
+    sub->add_option("--cluster-tile", backend.clusterTile, "--mode clustered: tile side in pixels")
+        ->default_val(16)
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--cluster-slices", backend.clusterSlices, "--mode clustered: depth slices")
+        ->default_val(16)
+        ->check(CLI::PositiveNumber);
   };
 
   auto* backendsCmd = cli.add_subcommand("backends", "List backends, drivers and devices");

@@ -1,5 +1,7 @@
 #include "conformance/scene_check.h"
 
+#include "lighting/light_clusters.h"
+
 #include "conformance/cpu_mutants.h"
 #include "conformance/popping.h"
 #include "conformance/reference_cache.h"
@@ -142,7 +144,8 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
   bool allPass = true;
   for (int f = first; f <= last; ++f) {
     const reference::ReferenceImages& ref = references.reference(f, backend.device().subTexelPrecisionBits);
-    const lighting::Frame frame = cpuMutantFrame(references.frame(f), options.mutant);
+    lighting::Frame frame = cpuMutantFrame(references.frame(f), options.mutant);
+    if (options.clustered) lighting::useLightClusters(frame, *options.clustered);
     if (f == first) timed(check.timings.pipeline, [&] { backend.preparePipeline(frame); });
     timed(check.timings.draw, [&] { backend.draw(frame); });
     imaging::Image result = timed(check.timings.readback, [&] { return backend.readback(); });

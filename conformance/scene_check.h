@@ -8,6 +8,7 @@
 #include "comparison/comparison_report.h"
 #include "comparison/image_comparison.h"
 #include "lighting/frame.h"
+#include "lighting/light_clusters.h"
 #include "reference/reference_renderer.h"
 #include "shaders/shader_variant.h"
 
@@ -120,6 +121,11 @@ struct CheckOptions {
   // The backend's mutant: a CPU mutant (conformance/cpu_mutants.h) alters the
   // frame the backend draws; the reference always gets the model's frame.
   shaders::Mutant mutant = shaders::Mutant::None;
+  // The clustered benchmark mode (issue 21, lighting/light_clusters.h): the
+  // backend draws each frame over its clusters' lights, against the same
+  // reference and tolerance (the mode drops no light that reaches a pixel).
+  // useLightClusters throws std::invalid_argument for a scene it cannot draw.
+  std::optional<lighting::ClusterGridSpec> clustered;
 };
 
 // Throws what the backend throws (NotSupportedError, DriverError).

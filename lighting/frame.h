@@ -20,6 +20,8 @@
 
 namespace lighting {
 
+struct LightClusters;  // light_clusters.h
+
 struct ObjectGeometry {
   Mesh mesh;                  // local space
   ObjectTransform transform;  // local to world
@@ -60,6 +62,9 @@ struct ShaderFeatures {
   bool specularBrdf = false;   // some object has the srp BRDF (SPEC 3.8)
   bool cookies = false;        // some kept light has a cookie (SPEC 3.10)
   bool shadowMaps = false;     // some kept light has a real-time shadow map (SPEC 3.9)
+  // Forward+ (issue 21, a benchmark mode, never the model's): each fragment
+  // loops over its cluster's lights (Frame::clusters) instead of every kept one.
+  bool clusteredLights = false;
 };
 
 // The lights that shade one object, as scene light indices.
@@ -77,6 +82,9 @@ struct Frame {
   ShaderFeatures features;
   CookieSlots cookies;  // SPEC 3.10: the kept lights' cookies and their texture slots
   ShadowSlots shadows;  // SPEC 3.9: the kept lights' shadow maps and their depth-texture slots
+  // The clustered mode's light lists (useLightClusters, light_clusters.h);
+  // null in every mode of the model.
+  std::shared_ptr<const LightClusters> clusters;
 
   const Scene& scene() const { return prepared->scene; }
   // False on the deferred path: it lights every kept light per pixel.

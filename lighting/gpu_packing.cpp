@@ -4,6 +4,9 @@
 #include "lighting/light_math.h"
 #include "lighting/shadow_packing.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace lighting {
 namespace {
 
@@ -54,12 +57,33 @@ GpuFrameBlock packFrameBlock(const Frame& frame) {
   block.view = vec4(-frame.view.forward, orthographic ? 1.0 : 0.0);
   const PackedLights& packed = frame.selection.packed;
   const bool legacy = frame.scene().pipeline.profile == Profile::Legacy;
-  block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, 0};
+  block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, frame.clusters ? 1 : 0};
+  if (frame.clusters) {
+    const ClusterGrid& grid = frame.clusters->grid;
+    block.clusterGrid = {grid.tilesX, grid.tilesY, grid.slices, grid.tileSize};
+    block.clusterScreen = {float(frame.view.width), float(frame.view.height), 0.0f, 0.0f};
+    block.clusterForward = vec4(frame.view.forward, 0.0);
+    block.clusterSlicing = {float(grid.sliceScale()), float(grid.sliceBias()), grid.exponential ? 1.0f : 0.0f,
+                            float(grid.nearDepth)};
+  }
   for (std::size_t i = 0; i < packed.directional.size(); ++i)
     block.directionalLights[i] = packGpuLight(frame, packed.directional[i], packed.directionalWeight[i]);
   for (std::size_t i = 0; i < packed.other.size(); ++i)
     block.otherLights[i] = packGpuLight(frame, packed.other[i], packed.otherWeight[i]);
   return block;
+}
+
+std::vector<std::uint32_t> packClusterTexels(const LightClusters& clusters) {
+  const std::size_t headers = clusters.first.size();
+  const std::size_t total = headers + clusters.lights.size();
+  if (total > (std::size_t(1) << (32 - kClusterCountBits)))
+    throw std::length_error("light clusters: " + std::to_string(total) + " texels, more than a header can address");
+  std::vector<std::uint32_t> texels;
+  texels.reserve(total);
+  for (std::size_t c = 0; c < headers; ++c)
+    texels.push_back(std::uint32_t((headers + clusters.first[c]) << kClusterCountBits) | clusters.count[c]);
+  texels.insert(texels.end(), clusters.lights.begin(), clusters.lights.end());
+  return texels;
 }
 
 GpuObjectBlock packObjectBlock(const Frame& frame, int object) {

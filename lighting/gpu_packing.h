@@ -9,6 +9,7 @@
 #pragma once
 
 #include "lighting/frame.h"
+#include "lighting/light_clusters.h"
 
 #include <array>
 #include <cstddef>
@@ -45,7 +46,7 @@ constexpr int kGpuMaxOtherLights = 64;
 struct GpuFrameBlock {
   GpuMat4 viewProjection;  // camera-relative world to clip (x right, y up, depth 0..1)
   GpuVec4 ambient;         // rgb
-  GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind), z: 1 for the legacy profile
+  GpuIVec4 lightCounts;    // x: directional lights, y: other lights (legacy: every kind), z: 1 for the legacy profile, w: 1 in the clustered mode
   GpuLight directionalLights[kGpuMaxDirectionalLights];
   GpuLight otherLights[kGpuMaxOtherLights];
   // xyz: the camera position rounded to float; w: 1. The model never reads
@@ -57,8 +58,17 @@ struct GpuFrameBlock {
   // the view direction); w 1 for an orthographic camera, 0 for a perspective
   // one, whose V is normalize(-p) of the camera-relative p.
   GpuVec4 view;
+  // The clustered mode (issue 21, lighting/light_clusters.h), zero in the
+  // model's modes: how a fragment finds its cluster. The tile from the pixel
+  // that viewProjection puts the camera-relative p at (API-neutral: neither
+  // gl_FragCoord's origin nor the viewport's flip enters), the slice from its
+  // view depth dot(p, forward).
+  GpuIVec4 clusterGrid;     // x: tiles across, y: tiles down, z: slices, w: tile size in pixels
+  GpuVec4 clusterScreen;    // x: image width, y: image height in pixels
+  GpuVec4 clusterForward;   // xyz: the camera's forward axis
+  GpuVec4 clusterSlicing;   // x: ClusterGrid::sliceScale, y: sliceBias, z: 1 exponential (log of the depth), 0 linear; w: the near depth
 };
-static_assert(sizeof(GpuFrameBlock) == 4480);
+static_assert(sizeof(GpuFrameBlock) == 4544);
 
 // Binding 1: per object.
 struct GpuObjectBlock {
@@ -90,6 +100,14 @@ GpuFrameBlock packFrameBlock(const Frame& frame);
 GpuLight packGpuLight(const Frame& frame, int sceneLight, double weight);
 GpuObjectBlock packObjectBlock(const Frame& frame, int object);
 std::vector<GpuVertex> packVertices(const Mesh& mesh);
+// The clustered mode's lists as one array of 32-bit unsigned texels (an
+// R32UI texel buffer on Vulkan, a texture buffer on OpenGL 3.3): texel c of
+// each cluster c (ClusterGrid::clusterIndex) holds (first << 8) | count,
+// where `first` is the texel of its first light index; the light indices
+// (into FrameBlock.otherLights) follow all the headers. Throws
+// std::length_error past 2^24 texels (what `first` can address).
+std::vector<std::uint32_t> packClusterTexels(const LightClusters& clusters);
+constexpr int kClusterCountBits = 8;  // a cluster lists at most 64 lights (kGpuMaxOtherLights)
 std::vector<std::uint32_t> packIndices(const Mesh& mesh);
 
 }  // namespace lighting

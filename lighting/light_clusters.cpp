@@ -101,6 +101,12 @@ std::uint32_t LightClusters::largestCount() const {
   return count.empty() ? 0 : *std::max_element(count.begin(), count.end());
 }
 
+int LightClusters::clusterAt(double pixelX, double pixelY, double viewDepth) const {
+  const int tx = std::clamp(int(std::floor(pixelX / grid.tileSize)), 0, grid.tilesX - 1);
+  const int ty = std::clamp(int(std::floor(pixelY / grid.tileSize)), 0, grid.tilesY - 1);
+  return grid.clusterIndex(tx, ty, grid.sliceOf(viewDepth));
+}
+
 LightClusters binLights(const Frame& frame, const ClusterGridSpec& spec) {
   // The legacy profile packs directional lights among the others and has
   // its own 16-light budget: not this mode's.
@@ -149,6 +155,19 @@ LightClusters binLights(const Frame& frame, const ClusterGridSpec& spec) {
     out.lights.insert(out.lights.end(), list.begin(), list.end());
   }
   return out;
+}
+
+void useLightClusters(Frame& frame, const ClusterGridSpec& spec) {
+  const Pipeline& pipeline = frame.scene().pipeline;
+  if (pipeline.profile != Profile::Srp)
+    throw std::invalid_argument("light clusters: the clustered mode draws the srp profile only; the scene is legacy");
+  if (pipeline.path != RenderPath::Forward)
+    throw std::invalid_argument("light clusters: the clustered mode is a forward path; the scene is deferred");
+  if (!frame.objectLists.empty() || frame.features.perObjectLists)
+    throw std::invalid_argument("light clusters: the clustered mode replaces the all-lights loop; the scene uses "
+                                "per-object lists");
+  frame.clusters = std::make_shared<const LightClusters>(binLights(frame, spec));
+  frame.features.clusteredLights = true;
 }
 
 }  // namespace lighting

@@ -23,6 +23,10 @@
 
 namespace lighting {
 
+// The mode's name everywhere it is chosen: `render --mode`, `compare --mode`
+// and the benchmark mode (suite/bench's modeName).
+constexpr const char* kClusteredModeName = "clustered";
+
 // The relative padding of every cluster's bounds and every range: 2^-10 of
 // the cluster's depth (and of the range), some thousand times float32's
 // relative error in a view depth or a distance (2^-24 per operation, a few
@@ -71,11 +75,22 @@ struct LightClusters {
   std::vector<std::uint32_t> lights;
 
   std::uint32_t largestCount() const;
+  // The cluster of a fragment at pixel coordinates (x right, y down from the
+  // image's top-left corner) and view depth, as the shader finds it.
+  int clusterAt(double pixelX, double pixelY, double viewDepth) const;
 };
 
 // Bins the frame's packed point and spot lights (SPEC 5.1's `other`: an
 // srp frame packs no directional light there). Throws std::invalid_argument
 // for a tile size or slice count below 1 and for a legacy-profile frame.
 LightClusters binLights(const Frame& frame, const ClusterGridSpec& spec);
+
+// Turns `frame` into its clustered form: bins its lights (binLights), keeps
+// the lists in frame.clusters and sets features.clusteredLights, so a backend
+// draws each fragment over its cluster's lights; nothing else changes (the
+// same kept lights, the same ideal). Throws std::invalid_argument for a frame
+// the mode does not draw: the legacy profile, the deferred path, per-object
+// lists (each already loops over fewer lights than a cluster may hold).
+void useLightClusters(Frame& frame, const ClusterGridSpec& spec);
 
 }  // namespace lighting

@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace reports::benchpages {
 namespace {
@@ -118,6 +121,48 @@ void costCurveSection(std::ostream& out, const BenchModel& m, const Entries& can
       out << curvePlot(m, scene + ", " + mode, scene, ofMode, true);
     }
   }
+}
+
+void twoTermSection(std::ostream& out, const BenchModel& m, const Entries& candidates) {
+  out << "<h2 id=\"two-term\">Two-term limit</h2>\n<p class=\"note\">Each backend's frame time as a fixed cost "
+         "per pixel plus a cost per pixel-light evaluation, <code>t = a \u00b7 pixels + b \u00b7 pixels \u00b7 "
+         "lights_per_pixel</code>, fitted by least squares (each point weighted by 1/t\u00b2, so by its relative "
+         "error) to its <code>curve-lights/all-lights</code> points; the residual is the fit's relative error at "
+         "those points. The flop roof is <code>limit_ms</code>'s cost of one evaluation at the calibrated peak "
+         "rate. <code>\u00d7 two-term</code> in the speed-against-error tables is each mode's median over "
+         "<code>a \u00b7 pixels + b \u00b7 pixels \u00b7 lights_per_pixel</code> of its own load: near 1, the "
+         "mode costs what its load predicts; above, it pays for something the two terms do not count.</p>\n";
+  std::vector<std::string> shown;
+  for (const BenchEntry* e : candidates)
+    if (m.twoTerm.contains(backendOf(*e)) && std::find(shown.begin(), shown.end(), backendOf(*e)) == shown.end())
+      shown.push_back(backendOf(*e));
+  if (shown.empty()) {
+    out << "<p>No backend has an all-lights light curve to fit.</p>\n";
+    return;
+  }
+  out << "<table class=\"bench\"><tr><th>backend</th><th>points</th><th>a, ns/pixel</th><th>b, ns/pixel-light</th>"
+         "<th>residual RMS %</th><th>largest residual %</th><th>flop roof, ns/pixel-light</th>"
+         "<th>b / roof</th></tr>\n";
+  for (const std::string& backend : shown) {
+    const TwoTermFit& fit = m.twoTerm.at(backend);
+    // The roof per evaluation from any curve point that carries limit_ms.
+    std::optional<double> roofNs;
+    for (const BenchEntry* e : candidates) {
+      if (backendOf(*e) != backend || e->name.scene != "curve-lights") continue;
+      const auto limit = counter(*e, "limit_ms");
+      const auto point = twoTermPointOf(*e);
+      if (limit && point && point->pixelLights > 0) {
+        roofNs = *limit / point->pixelLights * 1e6;
+        break;
+      }
+    }
+    const double bNs = fit.msPerPixelLight * 1e6;
+    out << "<tr><td>" << escapeText(backend) << "</td><td>" << fit.points << "</td><td>" << fmt(fit.msPerPixel * 1e6, 3)
+        << "</td><td>" << fmt(bNs, 3) << "</td><td>" << fmt(fit.rmsRelative * 100, 3) << "</td><td>"
+        << fmt(fit.maxRelative * 100, 3) << "</td><td>" << fmt(roofNs, 3) << "</td><td>"
+        << fmt(roofNs && *roofNs > 0 ? std::optional<double>(bNs / *roofNs) : std::nullopt, 3) << "</td></tr>\n";
+  }
+  out << "</table>\n";
 }
 
 void prepareSection(std::ostream& out, const BenchModel& m) {

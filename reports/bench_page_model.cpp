@@ -9,7 +9,8 @@
 
 namespace reports::benchpages {
 
-BenchModel::BenchModel(const Json& b) : bench(b), set(readBenchFile(b)), backends(benchBackends(b)) {
+BenchModel::BenchModel(const Json& b)
+    : bench(b), set(readBenchFile(b)), backends(benchBackends(b)), twoTerm(twoTermFits(set)) {
   for (const BenchEntry& e : set.entries)
     if (!e.name.mode.empty() && std::find(modes.begin(), modes.end(), e.name.mode) == modes.end())
       modes.push_back(e.name.mode);
@@ -56,6 +57,15 @@ std::optional<double> counter(const BenchEntry& e, const std::string& key) {
   return it->second;
 }
 
+std::optional<double> twoTermRatio(const BenchModel& m, const BenchEntry& e) {
+  const auto fit = m.twoTerm.find(backendOf(e));
+  const auto point = twoTermPointOf(e);
+  if (fit == m.twoTerm.end() || !point) return std::nullopt;
+  const double estimate = fit->second.estimateMs(point->pixels, point->pixelLights);
+  if (!(estimate > 0)) return std::nullopt;
+  return point->ms / estimate;
+}
+
 std::optional<double> limitRatio(const BenchEntry& e) {
   const auto limit = counter(e, "limit_ms");
   if (!limit || !(*limit > 0) || !e.medianMs) return std::nullopt;
@@ -95,11 +105,12 @@ std::vector<std::string> scenesOf(const Entries& entries) {
   std::stable_sort(scenes.begin(), scenes.end(), [](const std::string& a, const std::string& b) {
     const auto rank = [](const std::string& s) {
       if (s == "lights64-1280x720") return 0;
-      if (s.rfind("lightmap-", 0) == 0) return 1;
-      if (s == "curve-lights") return 2;
-      if (s == "curve-resolution") return 3;
-      if (s == "curve-objects") return 4;
-      return 5;
+      if (s.rfind("dense64-", 0) == 0) return 1;
+      if (s.rfind("lightmap-", 0) == 0) return 2;
+      if (s == "curve-lights") return 3;
+      if (s == "curve-resolution") return 4;
+      if (s == "curve-objects") return 5;
+      return 6;
     };
     return rank(a) < rank(b);
   });
@@ -111,6 +122,7 @@ std::string xAxisLabel(const std::string& scene) {
   if (scene == "curve-resolution") return "pixels";
   if (scene == "curve-objects") return "objects";
   if (scene == "curve-lightmap") return "lightmap texels";
+  if (scene == "curve-cluster-tile") return "tile side (pixels)";
   return scene.substr(6);
 }
 

@@ -6,9 +6,11 @@
 
 #include "reports/bench_data.h"
 #include "reports/result_fields.h"
+#include "reports/two_term_limit.h"
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +25,9 @@ struct BenchModel {
   BenchSet set;
   std::vector<std::string> backends;  // page order and colours
   std::vector<std::string> modes;     // colour order on backend pages
+  // Each backend's two-term limit (two_term_limit.h), fitted to its
+  // all-lights light curve; absent for a backend without that curve.
+  std::map<std::string, TwoTermFit> twoTerm;
 
   explicit BenchModel(const Json& b);
   std::size_t backendIndex(const std::string& name) const;
@@ -42,6 +47,9 @@ std::string fmt(const std::optional<double>& v, int digits = 4);
 std::optional<double> counter(const BenchEntry& e, const std::string& key);
 // The median over limit_ms (docs/performance.md, the physical limit).
 std::optional<double> limitRatio(const BenchEntry& e);
+// The median over the entry's two-term estimate (its backend's fit at its
+// pixels and lights_per_pixel); nullopt without a fit or a load.
+std::optional<double> twoTermRatio(const BenchModel& m, const BenchEntry& e);
 // The bench.json section it came from, else the backend its name says.
 std::string backendOf(const BenchEntry& e);
 

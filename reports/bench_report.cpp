@@ -171,6 +171,7 @@ std::string benchOverviewHtml(const Json& bench) {
   shadowMapSection(out, m, gpu);
   lightmapSection(out, m, gpu, true);
   costCurveSection(out, m, gpu, true);
+  twoTermSection(out, m, gpu);
   prepareSection(out, m);
   html::pageEnd(out);
   return out.str();
@@ -201,6 +202,7 @@ std::string benchBackendHtml(const Json& bench, const std::string& backend) {
   shadowMapSection(out, m, mine);
   lightmapSection(out, m, mine, false);
   costCurveSection(out, m, mine, false);
+  twoTermSection(out, m, mine);
   out << "<h2 id=\"table\">Every benchmark</h2>\n<p class=\"note\">Times in ms: the median over the repetitions "
          "(Google Benchmark's median aggregate when present), their minimum, maximum and standard deviation, and "
          "their count; counters are medians too. <code>\u00d7 limit</code> is the median over "

@@ -1,7 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Forward fragment stage: SPEC 3's sum for one fragment, over the lights the
-// CPU kept (SPEC 4 and 5): every kept light, or the object's list.
+// CPU kept (SPEC 4 and 5): every kept light, or the object's list; in the
+// clustered benchmark mode, the fragment's cluster's lights (clusters.glsl).
+#include "clusters.glsl"
 #include "lighting.glsl"
 #include "object_data.glsl"
 #include "object_maps.glsl"
@@ -39,6 +41,12 @@ void main() {
     if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectData.lightList.x;
     for (int k = 0; k < count; ++k) {
       vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask, textures, L);
+      addLight(sums, surface, radiance, L);
+    }
+  } else if (clusteredLights()) {
+    ivec2 range = clusterRange(clusterOf(p));
+    for (int k = 0; k < range.y; ++k) {
+      vec3 radiance = packedLight(frameData.otherLights[clusterLight(range.x + k)], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   } else {

@@ -17,11 +17,16 @@ struct Light {
 layout(std140, set = 0, binding = 0) uniform FrameBlock {
   mat4 viewProjection;  // camera-relative world to clip: x right, y up, depth 0..1
   vec4 ambient;
-  ivec4 lightCounts;    // x: directional lights, y: other lights, z: 1 for the legacy profile
+  ivec4 lightCounts;    // x: directional lights, y: other lights, z: 1 for the legacy profile, w: 1 clustered (clusters.glsl)
   Light directionalLights[4];
   Light otherLights[64];
   vec4 cameraPosition;  // xyz: the camera position in float, w: 1; read only by the absolute-coordinates mutants
   vec4 view;            // SPEC 3.8: xyz the orthographic V; w 1 orthographic, 0 perspective (V = normalize(-p))
+  // The clustered mode (clusters.glsl); zero in the model's modes.
+  ivec4 clusterGrid;    // x: tiles across, y: tiles down, z: slices, w: tile size in pixels
+  vec4 clusterScreen;   // xy: the image size in pixels
+  vec4 clusterForward;  // xyz: the camera's forward axis
+  vec4 clusterSlicing;  // x: slice scale, y: slice bias, z: 1 exponential, 0 linear; w: the near depth
 } frameData;
 
 // The specialised shader knows this from its constants; the full shader

@@ -22,6 +22,8 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   // The full shader asks each light's cookie slot (cookies.glsl).
   v[kCookies] = all || f.cookies;
   v[kShadowMaps] = all || f.shadowMaps;
+  // The full shader asks FrameBlock.lightCounts.w (clusters.glsl).
+  v[kClusteredLights] = all || f.clusteredLights;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   return v;
 }

@@ -24,7 +24,8 @@ enum ConstantId : std::uint32_t {
   kSpecularBrdf = 10,  // some material has the srp BRDF (SPEC 3.8)
   kCookies = 11,       // some kept light has a cookie (SPEC 3.10)
   kShadowMaps = 12,    // some kept light has a real-time shadow map (SPEC 3.9)
-  kConstantCount = 13,
+  kClusteredLights = 13,  // Forward+: the fragment loops over its cluster's lights (issue 21)
+  kConstantCount = 14,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

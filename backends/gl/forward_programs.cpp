@@ -1,5 +1,6 @@
 #include "backends/gl/forward_programs.h"
 
+#include "backends/gl/cluster_lists.h"
 #include "backends/gl/cookie_textures.h"
 #include "backends/gl/program_builder.h"
 #include "backends/gl/shadow_maps.h"
@@ -28,6 +29,7 @@ GlName ForwardPrograms::build(const shaders::ConstantValues& constants) const {
   GlName program = linkProgram(gl_, shaders::forwardVertexGlsl330(), shaders::forwardFragmentGlsl330(), constants,
                                "the forward program");
   bindSceneObjectInterface(gl_, program.get());
+  bindClusterListsInterface(gl_, program.get());  // forward only: the G-buffer pass has no clusters
   gl_.glUseProgram(0);
   gl_.check("linking the forward program");
   return program;

@@ -3,7 +3,8 @@
 // first use; the uniform blocks are bound by name to the bindings the Vulkan
 // layout uses (0 frame, 1 object), and the baked maps' samplers to texture
 // units 0 (lightmap) and 1 (mask); the cookies' and shadow maps' blocks and
-// samplers as cookie_textures.h and shadow_maps.h give them.
+// samplers as cookie_textures.h and shadow_maps.h give them, the clustered
+// mode's lists as cluster_lists.h does.
 #pragma once
 
 #include "backends/gl/gl_objects.h"

@@ -5,6 +5,7 @@
 #include "backends/gl/baked_textures.h"
 #include "backends/gl/cookie_textures.h"
 #include "backends/gl/deferred_renderer.h"
+#include "backends/gl/cluster_lists.h"
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/gl_context.h"
 #include "backends/gl/gl_objects.h"
@@ -54,6 +55,7 @@ class GlBackend final : public Backend {
     cookieTextures_.emplace(gl_);
     shadowMaps_.emplace(gl_, options.variant.mutant);
     sceneDraws_.emplace(gl_);
+    clusterLists_.emplace(gl_);
     deferred_.emplace(gl_, options.variant.mutant);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
     // its counter 0 bits: it then has no clock, and draws are not timed.
@@ -105,6 +107,7 @@ class GlBackend final : public Backend {
     const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(constants) : DeferredProgramSet{};
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     sceneDraws_->update(frame);
+    if (!isDeferred) clusterLists_->update(frame);  // the clustered mode's lists, or one zero texel
     prepareTextures(frame);  // before the timed draws: uploads are not drawing
     // SPEC 3.9: the maps are complete before anything that reads them, the
     // forward pass or the deferred light pass; timed apart (GL allows one
@@ -232,6 +235,7 @@ class GlBackend final : public Backend {
   std::optional<CookieTextures> cookieTextures_;
   std::optional<ShadowMaps> shadowMaps_;
   std::optional<SceneDraws> sceneDraws_;
+  std::optional<ClusterLists> clusterLists_;
   std::optional<DeferredRenderer> deferred_;
   GlName color_, depth_, framebuffer_;
   GlName timer_;  // the GL_TIME_ELAPSED query; none when the driver's timer has 0 bits

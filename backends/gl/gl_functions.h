@@ -78,6 +78,7 @@ namespace backends::gl {
   X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                       \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                             \
   X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                       \
+  X(PFNGLTEXBUFFERPROC, glTexBuffer)                               \
   X(PFNGLFRAMEBUFFERTEXTURE2DPROC, glFramebufferTexture2D)         \
   X(PFNGLBLENDFUNCPROC, glBlendFunc)                               \
   X(PFNGLBLENDEQUATIONPROC, glBlendEquation)                       \

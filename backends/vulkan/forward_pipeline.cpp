@@ -1,6 +1,7 @@
 #include "backends/vulkan/forward_pipeline.h"
 
 #include "backends/vulkan/baked_textures.h"
+#include "backends/vulkan/cluster_lists.h"
 #include "backends/vulkan/light_texture_set.h"
 #include "backends/vulkan/scene_uniforms.h"
 #include "shaders/embedded_spirv.h"
@@ -12,7 +13,9 @@ namespace backends::vulkan {
 ForwardPipelines::ForwardPipelines(const VulkanDevice& device, const PipelineCacheFile& cache)
     : builder_(device, cache),
       stages_(device.device, shaders::forwardVertexSpirv(), shaders::forwardFragmentSpirv()) {
-  const std::array<vk::DescriptorSetLayoutBinding, 2> bindings = SceneUniforms::layoutBindings();
+  // Set 0: the scene's uniforms, and the clustered mode's lists (binding 2).
+  const std::array<vk::DescriptorSetLayoutBinding, 2> scene = SceneUniforms::layoutBindings();
+  const std::array<vk::DescriptorSetLayoutBinding, 3> bindings{scene[0], scene[1], ClusterLists::layoutBinding()};
   setLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
   // Set 1 is in every pipeline's layout: the fragment stage's SPIR-V declares

@@ -1,5 +1,5 @@
 // The forward pipeline: its descriptor set layouts (set 0: the scene's
-// uniforms, scene_uniforms.h; set 1: the object's baked maps,
+// uniforms, scene_uniforms.h, and the clustered mode's lists, cluster_lists.h; set 1: the object's baked maps,
 // baked_textures.h; set 2: empty, the deferred path's G-buffer set; set 3:
 // the cookies and shadow maps, light_texture_set.h), forward.vert and forward.frag, and one pipeline per set
 // of specialization constants, built on first use (pipeline_builder.h).

@@ -102,7 +102,7 @@ class VulkanBackend final : public Backend {
       uniforms_.reset();
       uniforms_.emplace(device_, pipelines_.setLayout(), objectCount);
     }
-    uniforms_->scene().write(frame);
+    uniforms_->write(frame);
 
     const vk::raii::Pipeline& pipeline = pipelines_.pipeline(shaders::constantValues(frame.features, options_.variant));
     submit(

@@ -27,7 +27,23 @@ TEST(GpuPacking, Std140OffsetsOfTheFrameBlock) {
   EXPECT_EQ(offsetof(GpuFrameBlock, otherLights), 96u + 4 * 64);
   EXPECT_EQ(offsetof(GpuFrameBlock, cameraPosition), 96u + 68 * 64);
   EXPECT_EQ(offsetof(GpuFrameBlock, view), 96u + 68 * 64 + 16);
-  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 32);
+  EXPECT_EQ(offsetof(GpuFrameBlock, clusterGrid), 96u + 68 * 64 + 32);
+  EXPECT_EQ(offsetof(GpuFrameBlock, clusterScreen), 96u + 68 * 64 + 48);
+  EXPECT_EQ(offsetof(GpuFrameBlock, clusterForward), 96u + 68 * 64 + 64);
+  EXPECT_EQ(offsetof(GpuFrameBlock, clusterSlicing), 96u + 68 * 64 + 80);
+  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 96);
+}
+
+// Three clusters listing {0, 2}, {}, {1}: headers at texels 0-2, the lists
+// from texel 3 on; each header is (first texel << 8) | count.
+TEST(GpuPacking, ClusterTexelsAreHeadersThenLists) {
+  LightClusters clusters;
+  clusters.first = {0, 2, 2};
+  clusters.count = {2, 0, 1};
+  clusters.lights = {0, 2, 1};
+  const std::vector<std::uint32_t> texels = packClusterTexels(clusters);
+  const std::vector<std::uint32_t> expected = {(3u << 8) | 2u, (5u << 8) | 0u, (5u << 8) | 1u, 0, 2, 1};
+  EXPECT_EQ(texels, expected);
 }
 
 TEST(GpuPacking, Std140OffsetsOfTheObjectBlock) {

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -193,6 +194,39 @@ TEST(LightClusters, RejectsAnEmptyGrid) {
   Scene legacy = s;
   legacy.pipeline.profile = Profile::Legacy;  // the clustered mode is the srp profile's
   EXPECT_THROW(binLights(prepareFrame(prepareScene(legacy), 0), {16, 16}), std::invalid_argument);
+}
+
+// useLightClusters marks the frame and keeps the lists; it refuses what the
+// mode does not draw (the legacy profile, the deferred path, per-object lists).
+TEST(LightClusters, UseLightClustersMarksTheFrameOrRefusesIt) {
+  Scene s;
+  Object floor;
+  floor.mesh.planeSizeX = floor.mesh.planeSizeZ = 4;
+  s.objects.push_back(floor);
+  Light point;
+  point.type = LightType::Point;
+  point.position = {0, 1, 0};
+  point.range = 2;
+  s.lights.push_back(point);
+  Frame frame = prepareFrame(prepareScene(s), 0);
+  ASSERT_FALSE(frame.clusters);
+  useLightClusters(frame, {8, 4});
+  ASSERT_TRUE(frame.clusters);
+  EXPECT_TRUE(frame.features.clusteredLights);
+  EXPECT_EQ(frame.clusters->grid.tileSize, 8);
+  EXPECT_EQ(frame.clusters->grid.slices, 4);
+  EXPECT_GT(frame.clusters->lights.size(), 0u);
+
+  for (const auto& change : std::vector<std::function<void(Scene&)>>{
+           [](Scene& x) { x.pipeline.profile = Profile::Legacy; },
+           [](Scene& x) { x.pipeline.path = RenderPath::Deferred; },
+           [](Scene& x) { x.pipeline.lightsPerObject = true; }}) {
+    Scene refused = s;
+    change(refused);
+    Frame f = prepareFrame(prepareScene(refused), 0);
+    EXPECT_THROW(useLightClusters(f, {8, 4}), std::invalid_argument);
+    EXPECT_FALSE(f.clusters);
+  }
 }
 
 }  // namespace

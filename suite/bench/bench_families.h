@@ -64,6 +64,13 @@ FieldModes fieldModes(const RunState& run);
 void registerFieldModes(Registrar& r, const NamedFrames& frames);
 void registerFieldPipelines(Registrar& r, const NamedFrames& frames);
 
+// The dense field (issue 21; dense64-<W>x<H>, FieldSpec::rangeScale =
+// kDenseFieldRangeScale) in all-lights, per-object and clustered: frame only,
+// each with its error against the dense field's ideal.
+std::string denseFieldSceneName(const RunState& run);
+NamedFrames denseFieldModes(const RunState& run);
+void registerDenseFieldModes(Registrar& r, const NamedFrames& frames);
+
 // upload/<b>/lights64-1280x720/cookies/<N>: prepareTextures of a fresh
 // prepared scene of the cookie field with N x N cookies, on the shipped-shader
 // backend (registered with its benchmarks, before the full-shader ones).

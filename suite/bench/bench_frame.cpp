@@ -22,13 +22,24 @@ void checkKept(const Frame& frame) {
                  scene.name.c_str(), kept, expected);
 }
 
+// The dense field's promise (kDenseFieldLeastObjectLights): every object's
+// list (SPEC 5.2, before the cut to 8) holds at least `least` lights.
+void checkObjectLights(const Frame& frame, int least) {
+  for (std::size_t o = 0; o < frame.objectLists.size(); ++o)
+    if (frame.objectLists[o].count < least)
+      std::fprintf(stderr, "render_bench: synthetic scene %s: object %zu is touched by %d lights, not %d or more\n",
+                   frame.scene().name.c_str(), o, frame.objectLists[o].count, least);
+}
+
 }  // namespace
 
 std::shared_ptr<const BenchFrame> makeBenchFrame(BenchFrameSpec spec) {
   auto bench = std::make_shared<BenchFrame>();
   bench->frame = prepareFrame(spec.prepared, 0);
+  if (spec.clusters) useLightClusters(bench->frame, *spec.clusters);
   bench->load = loadOf(bench->frame);
   if (spec.everyLightInView) checkKept(bench->frame);
+  if (spec.leastObjectLights > 0) checkObjectLights(bench->frame, spec.leastObjectLights);
   bench->spec = std::move(spec);
   return bench;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "lighting/frame.h"
+#include "lighting/light_clusters.h"
 #include "suite/bench/frame_load.h"
 
 #include <memory>
@@ -35,6 +36,12 @@ struct BenchFrameSpec {
   // A synthetic scene with every light in view: the cut of SPEC 5.1 must keep
   // min(lights, budget) point/spot lights, or a warning goes to stderr.
   bool everyLightInView = false;
+  // The clustered mode (FrameMode::Clustered): frame 0 binned with this grid
+  // (lighting::useLightClusters) before its load is measured.
+  std::optional<lighting::ClusterGridSpec> clusters;
+  // The dense field: every object's list must hold at least this many lights
+  // (per-object mode only), or a warning goes to stderr.
+  int leastObjectLights = 0;
 };
 
 struct BenchFrame {

@@ -40,6 +40,7 @@ std::string modeName(FrameMode mode) {
     case FrameMode::AllLights: return "all-lights";
     case FrameMode::PerObject: return "per-object";
     case FrameMode::Legacy4x4: return "legacy-4+4";
+    case FrameMode::Clustered: return lighting::kClusteredModeName;
     default: return "?";
   }
 }
@@ -219,7 +220,7 @@ Scene fieldScene(const FieldSpec& spec, const std::string& name) {
     }
   }
   const double cellX = fieldX / spec.lightColumns, cellZ = kFieldZ / spec.lightRows;
-  const double range = 0.85 * std::sqrt(cellX * cellZ / (1.6 * 0.9));
+  const double range = 0.85 * spec.rangeScale * std::sqrt(cellX * cellZ / (1.6 * 0.9));
   const bool shadowLights = spec.shadowLights || spec.shadows;
   const bool cookieLights = spec.cookieLights || spec.cookies || shadowLights;
   // SPEC 3.9's map of one of the shadow field's lights (FieldSpec::shadows).

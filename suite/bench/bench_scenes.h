@@ -7,6 +7,7 @@
 // resolutions) is a second one: one lightmapped plane under a few point lights.
 #pragma once
 
+#include "lighting/light_clusters.h"
 #include "lighting/scene.h"
 
 #include <optional>
@@ -25,10 +26,15 @@ enum class FrameMode {
   DeferredHdr32,
   DeferredHdr16,
   DeferredLdr8,
+  // srp forward, each pixel over its cluster's lights (issue 21, Forward+:
+  // lighting/light_clusters.h): the all-lights scene, binned per frame. A
+  // benchmark mode, never a suite scene's.
+  Clustered,
 };
 
 // all-lights, per-object, legacy-4+4, deferred-<buffer> (the buffer's
-// scene-format name, lighting::deferredBufferName).
+// scene-format name, lighting::deferredBufferName), clustered
+// (lighting::kClusteredModeName).
 std::string modeName(FrameMode mode);
 // The light buffer of a deferred mode; nullopt for the forward modes.
 std::optional<lighting::DeferredBuffer> deferredBufferOf(FrameMode mode);
@@ -47,6 +53,9 @@ struct FieldSpec {
   // over the field; the range scales with the cell (0.85 on 1.6 x 0.9 cells).
   int lightColumns = 8, lightRows = 8;
   FrameMode mode = FrameMode::AllLights;
+  // Each light's range times this: 1 is the 64-light field; kDenseFieldRangeScale
+  // the dense field, where per-object lists truncate.
+  double rangeScale = 1.0;
   // Every tile and box with the srp BRDF (SPEC 3.8; kFieldMetallic,
   // kFieldSmoothness) instead of Lambert: what the specular lobe costs.
   bool specularBrdf = false;
@@ -107,6 +116,14 @@ inline constexpr int kFilteredShadowResolutions[] = {256, 1024, 4096};
 // The srp material of the field's specular modes: a highlight of a few
 // pixels under each light seen from straight above (smoothness 0.8), with a
 // coloured F0 (metallic 0.3 of the tiles' and boxes' albedo).
+// The dense field (issue 21): every range 5.5 times the 64-light field's
+// (0.85 -> 4.675 on 1.6 x 0.9 cells), so every tile and box is touched by 23
+// lights or more (a corner tile the fewest; docs/bench-format.md derives it):
+// per-object lists (at most 8 per object, SPEC 5.2) drop most of a pixel's
+// light, the clustered mode drops none.
+inline constexpr double kDenseFieldRangeScale = 5.5;
+inline constexpr int kDenseFieldLeastObjectLights = 20;  // what the issue asks of every object
+
 inline constexpr double kFieldMetallic = 0.3;
 inline constexpr double kFieldSmoothness = 0.8;
 

@@ -105,6 +105,18 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
         return parsed;
       }
       settings.mutant = *mutant;
+    } else if (i > 0 && (startsWith(a, "--cluster_tile=", value) || startsWith(a, "--cluster_slices=", value))) {
+      const std::string text(value);
+      char* end = nullptr;
+      const long n = std::strtol(text.c_str(), &end, 10);
+      if (end == text.c_str() || *end != '\0' || n < 1 || n > 4096) {
+        std::fprintf(stderr, "render_bench: %.*s needs a whole number from 1 to 4096, not '%s'\n",
+                     int(a.size() - value.size() - 1), a.data(), text.c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
+      (startsWith(a, "--cluster_tile=", value) ? settings.clusterGrid.tileSize : settings.clusterGrid.depthSlices) =
+          int(n);
     } else if (i > 0 && a == "--quick") settings.quick = true;
     else if (i > 0 && a == "--suite_scenes") settings.suiteScenes = true;
     else parsed.rest.push_back(argv[i]);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "backends/backend_combinations.h"
+#include "lighting/light_clusters.h"
 #include "shaders/shader_variant.h"
 
 #include <filesystem>
@@ -36,6 +37,9 @@ struct Settings {
   // --mutant (tests only): every backend draws this deliberately wrong
   // variant (shaders/shader_variant.h), so a test can time a broken mode.
   shaders::Mutant mutant = shaders::Mutant::None;
+  // --cluster_tile=N, --cluster_slices=N: the clustered mode's grid (issue
+  // 21) on the fields and the light curve; the tile curve varies the tile.
+  lighting::ClusterGridSpec clusterGrid;
   // The combination backend and driver select: its suffix names every
   // benchmark, and a slow driver (softpipe) runs the scaled-down set.
   const backends::BackendCombination* combination = nullptr;

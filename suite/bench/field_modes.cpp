@@ -51,7 +51,7 @@ std::string referenceKeyOf(const std::string& scene, const FieldModeSpec& mode) 
 // are the whole set on a second context path to a driver.
 bool isLightPathMode(const std::string& mode) {
   for (const FrameMode m : {FrameMode::AllLights, FrameMode::PerObject, FrameMode::Legacy4x4, FrameMode::DeferredHdr32,
-                            FrameMode::DeferredHdr16, FrameMode::DeferredLdr8})
+                            FrameMode::DeferredHdr16, FrameMode::DeferredLdr8, FrameMode::Clustered})
     if (mode == modeName(m)) return true;
   return false;
 }
@@ -99,6 +99,8 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
                                       modeOf(FrameMode::Legacy4x4, true, modeName(FrameMode::Legacy4x4) + "-full-shader")};
   if (!slow) modes.insert(modes.begin() + 3, modeOf(FrameMode::AllLights, true, "full-shader"));
   if (quick) modes.resize(2);
+  // Forward+ (issue 21): every kept light, each pixel over its cluster's.
+  modes.insert(modes.begin() + 2, modeOf(FrameMode::Clustered, false, modeName(FrameMode::Clustered)));
   const std::string specular = kSpecularSuffix;
   modes.push_back(modeOf(FrameMode::AllLights, false, specular, true));
   if (!quick) {
@@ -145,6 +147,41 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
   return modes;
 }
 
+std::string denseFieldSceneName(const RunState& run) {
+  const FieldSize size = fieldSize(run);
+  return "dense64-" + std::to_string(size.width) + "x" + std::to_string(size.height);
+}
+
+// The dense field (issue 21, kDenseFieldRangeScale): the three ways to light
+// every kept light per pixel or some of them, each against the dense field's
+// own ideal: all-lights, per-object (truncated at 8 of 23 or more) and clustered.
+NamedFrames denseFieldModes(const RunState& run) {
+  const std::string scene = denseFieldSceneName(run);
+  const FieldSize size = fieldSize(run);
+  NamedFrames frames;
+  for (const FrameMode mode : {FrameMode::AllLights, FrameMode::PerObject, FrameMode::Clustered}) {
+    FieldSpec field;
+    field.width = size.width;
+    field.height = size.height;
+    field.mode = mode;
+    field.rangeScale = kDenseFieldRangeScale;
+    BenchFrameSpec spec;
+    spec.prepared = prepareScene(fieldScene(field, scene + "-" + modeName(mode)));
+    spec.referenceKey = scene + "/srp";
+    spec.errorKey = scene + "/" + modeName(mode);
+    spec.everyLightInView = true;
+    if (mode == FrameMode::Clustered) spec.clusters = run.settings.clusterGrid;
+    if (mode == FrameMode::PerObject) spec.leastObjectLights = kDenseFieldLeastObjectLights;
+    frames.emplace_back(modeName(mode), makeBenchFrame(std::move(spec)));
+  }
+  return frames;
+}
+
+void registerDenseFieldModes(Registrar& r, const NamedFrames& frames) {
+  const std::string scene = denseFieldSceneName(r.run());
+  for (const auto& [mode, bench] : frames) r.frame(scene, mode, "", bench, false);
+}
+
 FieldModes fieldModes(const RunState& run) {
   const std::string scene = fieldSceneName(run);
   const FieldSize size = fieldSize(run);
@@ -160,6 +197,7 @@ FieldModes fieldModes(const RunState& run) {
     spec.referenceKey = referenceKeyOf(scene, mode);
     spec.errorKey = scene + "/" + mode.name;
     spec.everyLightInView = true;
+    if (field.mode == FrameMode::Clustered) spec.clusters = run.settings.clusterGrid;
     if (deferredBufferOf(field.mode)) {
       // The deferred modes share the srp reference of the forward field, made
       // from that scene whichever mode runs first: a deferred scene's own

@@ -90,6 +90,7 @@ std::vector<ErrorCandidate> registerAll(const std::shared_ptr<RunState>& run) {
     registerFieldPipelines(registrar, field.pipeline);
     return registrar.errorCandidates();
   }
+  registerDenseFieldModes(registrar, denseFieldModes(*run));
   registerLightmapModes(registrar);
   registerCurves(registrar);
   if (run->settings.suiteScenes) registerSuiteScenes(registrar);

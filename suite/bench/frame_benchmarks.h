@@ -15,6 +15,7 @@ namespace bench {
 //   --quick                             fewer points and repetitions (the ctest smoke test)
 //   --scenes=DIR                        suite scenes (default: the source tree's suite/scenes)
 //   --suite_scenes                      also time every suite scene (frame kind)
+//   --cluster_tile=N, --cluster_slices=N the clustered mode's grid (default 16 pixels, 16 slices)
 //   --mutant=NAME                       tests only: draw that mutant (shaders/shader_variant.h),
 //                                        a broken image to time (bench.broken-smoke)
 // Every other argument goes to Google Benchmark (--benchmark_out=FILE,

@@ -3,6 +3,7 @@
 #include "reference/bvh.h"
 #include "reference/world_triangles.h"
 #include "suite/bench/deferred_load.h"
+#include "lighting/light_clusters.h"
 
 #include <glm/geometric.hpp>
 
@@ -14,6 +15,19 @@
 namespace bench {
 
 using namespace lighting;
+
+namespace {
+
+// The clustered mode: the directional lights and the lights of the cluster
+// the hit point falls in (the shader's loop, LightClusters::clusterAt).
+double clusteredLightsAt(const Frame& frame, double pixelX, double pixelY, const Ray& ray, double t) {
+  const double depth = glm::dot(ray.origin + t * ray.direction - frame.view.camera.position, frame.view.forward);
+  const LightClusters& clusters = *frame.clusters;
+  const int cluster = clusters.clusterAt(pixelX, pixelY, depth);
+  return double(frame.selection.packed.directional.size()) + double(clusters.count[std::size_t(cluster)]);
+}
+
+}  // namespace
 
 FrameLoad loadOf(const Frame& frame) {
   FrameLoad load;
@@ -37,6 +51,7 @@ FrameLoad loadOf(const Frame& frame) {
       const double cosine = glm::dot(ray.direction, frame.view.forward);
       const auto hit = bvh.nearestHit(ray, frame.view.camera.nearPlane / cosine, frame.view.camera.farPlane / cosine);
       if (hit && deferred) sum += deferred->volumesShading(ray, hit->t);
+      else if (hit && frame.clusters) sum += clusteredLightsAt(frame, i + 0.5, j + 0.5, ray, hit->t);
       else if (hit) sum += perObject[std::size_t(world.triangles[std::size_t(hit->triangle)].object)];
       samples += 1;
     }
