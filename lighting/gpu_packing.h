@@ -60,9 +60,9 @@ struct GpuFrameBlock {
   GpuVec4 view;
   // The clustered mode (issue 21, lighting/light_clusters.h), zero in the
   // model's modes: how a fragment finds its cluster. The tile from the pixel
-  // that viewProjection puts the camera-relative p at (API-neutral: neither
-  // gl_FragCoord's origin nor the viewport's flip enters), the slice from its
-  // view depth dot(p, forward).
+  // its clip position (viewProjection's, interpolated from the vertices) is
+  // at (API-neutral: neither gl_FragCoord's origin nor the viewport's flip
+  // enters), the slice from its view depth dot(p, forward).
   GpuIVec4 clusterGrid;     // x: tiles across, y: tiles down, z: slices, w: tile size in pixels
   GpuVec4 clusterScreen;    // x: image width, y: image height in pixels
   GpuVec4 clusterForward;   // xyz: the camera's forward axis

@@ -10,7 +10,7 @@
 // not touch (the test is sphere against the cluster's view-space bounding
 // box, padded), never the reverse. The padding covers what a float32 GPU does
 // differently from this double-precision binning: the slice it computes from
-// its own view depth, the position it interpolates, the distance it compares
+// its own view depth, the position and clip position it interpolates, the distance it compares
 // with the range (kClusterPadding).
 //
 // Directional lights shade every pixel and are not binned.

@@ -5,24 +5,28 @@
 // then the light indices into FrameBlock.otherLights, in packed order, so the
 // sum runs in the same order as the all-lights loop and only skips lights
 // whose range does not reach the fragment (they add exactly 0 there).
-// Only forward.frag includes this: the deferred passes have no binding 2.
+// Only forward.frag includes this: set 2 is the deferred passes' G-buffer.
 #ifndef LIGHTCTS_CLUSTERS_GLSL
 #define LIGHTCTS_CLUSTERS_GLSL
 
 #include "light_data.glsl"
 
-// Vulkan: a uniform texel buffer at set 0, binding 2; OpenGL 3.3: a texture
+// Vulkan: a uniform texel buffer, set 2 (the forward pass binds it once; the
+// deferred passes have their G-buffer there); OpenGL 3.3: a texture
 // buffer on the unit the backend gives the sampler.
-layout(set = 0, binding = 2) uniform usamplerBuffer clusterLists;
+layout(set = 2, binding = 0) uniform usamplerBuffer clusterLists;
 
 // The specialised shader knows from its constant; the full shader asks.
 bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts.w != 0; }
 
 // The cluster of the camera-relative point p, by LightClusters::clusterAt's
-// arithmetic in float: the pixel viewProjection puts p at (y down from the
+// arithmetic in float: the pixel of its clip position (y down from the
 // image's top), the slice of its view depth (ClusterGrid::sliceOf).
-int clusterOf(vec3 p) {
-  vec4 clip = frameData.viewProjection * vec4(p, 1.0);
+// `clip` is forward.vert's gl_Position, interpolated (perspective-correct, so
+// it is viewProjection * p up to rounding), not viewProjection * p here:
+// lavapipe (Mesa 22.3) took a fixed 70-180 ms a frame longer when this stage
+// read the matrix (measured, issue 21; the other drivers did not).
+int clusterOf(vec4 clip, vec3 p) {
   vec2 ndc = clip.xy / clip.w;
   vec2 pixel = vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * frameData.clusterScreen.xy;
   ivec4 grid = frameData.clusterGrid;

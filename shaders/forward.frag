@@ -12,6 +12,7 @@ layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) in vec3 vVertexLighting;
 layout(location = 3) in vec2 vLightmapUv;
+layout(location = 4) in vec4 vClip;
 
 layout(location = 0) out vec4 outColor;
 
@@ -44,7 +45,7 @@ void main() {
       addLight(sums, surface, radiance, L);
     }
   } else if (clusteredLights()) {
-    ivec2 range = clusterRange(clusterOf(p));
+    ivec2 range = clusterRange(clusterOf(vClip, p));
     for (int k = 0; k < range.y; ++k) {
       vec3 radiance = packedLight(frameData.otherLights[clusterLight(range.x + k)], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);

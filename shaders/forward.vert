@@ -16,6 +16,7 @@ layout(location = 0) out vec3 vPosition;  // camera-relative world position (abs
 layout(location = 1) out vec3 vNormal;
 layout(location = 2) out vec3 vVertexLighting;
 layout(location = 3) out vec2 vLightmapUv;  // SPEC 3.6: u = x_local / sx + 0.5, v = z_local / sz + 0.5
+layout(location = 4) out vec4 vClip;  // gl_Position, for the clustered mode's tile (clusters.glsl)
 
 const int kLegacyPixelLights = 4;
 const int kMaxLightsPerObject = 8;
@@ -43,4 +44,5 @@ void main() {
           packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), textures, L);
   }
   gl_Position = frameData.viewProjection * position;
+  vClip = gl_Position;
 }

@@ -4,20 +4,28 @@
 #include "lighting/gpu_packing.h"
 #include "lighting/light_clusters.h"
 
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace backends::vulkan {
 
-vk::DescriptorSetLayoutBinding ClusterLists::layoutBinding() {
-  return {.binding = kClusterListsBinding, .descriptorType = vk::DescriptorType::eUniformTexelBuffer,
-          .descriptorCount = 1, .stageFlags = vk::ShaderStageFlagBits::eFragment};
+vk::raii::DescriptorSetLayout ClusterLists::createSetLayout(const vk::raii::Device& device) {
+  const vk::DescriptorSetLayoutBinding binding{.binding = kClusterListsBinding,
+                                               .descriptorType = vk::DescriptorType::eUniformTexelBuffer,
+                                               .descriptorCount = 1,
+                                               .stageFlags = vk::ShaderStageFlagBits::eFragment};
+  return vk::raii::DescriptorSetLayout(device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = 1, .pBindings = &binding});
 }
 
-ClusterLists::ClusterLists(const VulkanDevice& device) : device_(device) { allocate(1); }
+ClusterLists::ClusterLists(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout) : device_(device) {
+  const std::array<vk::DescriptorPoolSize, 1> perSet{{{vk::DescriptorType::eUniformTexelBuffer, 1}}};
+  descriptors_ = DescriptorSets(device.device, layout, perSet, 1);
+  allocate(1);
+}
 
-bool ClusterLists::write(const lighting::Frame& frame) {
+void ClusterLists::write(const lighting::Frame& frame) {
   const std::vector<std::uint32_t> texels =
       frame.clusters ? lighting::packClusterTexels(*frame.clusters) : std::vector<std::uint32_t>{0};
   const vk::DeviceSize needed = texels.size();
@@ -26,15 +34,8 @@ bool ClusterLists::write(const lighting::Frame& frame) {
                             " texels; this device's texel buffers hold " +
                             std::to_string(device_.limits.maxTexelBufferElements) +
                             " (choose larger tiles or fewer slices)");
-  const bool grown = needed > capacity_;
-  if (grown) allocate(needed);
+  if (needed > capacity_) allocate(needed);
   buffer_->write(std::span<const std::uint32_t>(texels));
-  return grown;
-}
-
-vk::WriteDescriptorSet ClusterLists::descriptorWrite(vk::DescriptorSet set) const {
-  return {.dstSet = set, .dstBinding = kClusterListsBinding, .descriptorCount = 1,
-          .descriptorType = vk::DescriptorType::eUniformTexelBuffer, .pTexelBufferView = &viewHandle_};
 }
 
 void ClusterLists::allocate(vk::DeviceSize texels) {
@@ -45,7 +46,11 @@ void ClusterLists::allocate(vk::DeviceSize texels) {
                                                                         .format = vk::Format::eR32Uint,
                                                                         .offset = 0,
                                                                         .range = texels * sizeof(std::uint32_t)});
-  viewHandle_ = *view_;
+  const vk::BufferView view = *view_;
+  device_.device.updateDescriptorSets(
+      {vk::WriteDescriptorSet{.dstSet = set(), .dstBinding = kClusterListsBinding, .descriptorCount = 1,
+                              .descriptorType = vk::DescriptorType::eUniformTexelBuffer, .pTexelBufferView = &view}},
+      {});
   capacity_ = texels;
 }
 

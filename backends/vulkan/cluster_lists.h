@@ -1,11 +1,13 @@
 // The clustered mode's light lists (issue 21, shaders/clusters.glsl) as a
-// uniform texel buffer of R32UI texels at set 0, binding 2 of the forward
-// pipeline. Every forward frame writes it: the frame's lists in the clustered
+// uniform texel buffer of R32UI texels, alone in set 2 of the forward
+// pipeline, which the pass binds once (set 0 is bound again for every
+// object). Every forward frame writes it: the frame's lists in the clustered
 // mode, one zero texel otherwise, so the binding is always valid (the full
 // shader declares it whatever the frame draws). The buffer grows when a
 // frame's lists outgrow it, and only then is the descriptor rewritten.
 #pragma once
 
+#include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
 #include "lighting/frame.h"
 
@@ -14,28 +16,28 @@
 
 namespace backends::vulkan {
 
-constexpr std::uint32_t kClusterListsBinding = 2;
+constexpr std::uint32_t kClusterListsSetIndex = 2;
+constexpr std::uint32_t kClusterListsBinding = 0;
 
 class ClusterLists {
  public:
-  static vk::DescriptorSetLayoutBinding layoutBinding();
+  static vk::raii::DescriptorSetLayout createSetLayout(const vk::raii::Device& device);
 
-  explicit ClusterLists(const VulkanDevice& device);
+  ClusterLists(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout);
 
-  // Writes `frame`'s texels (lighting::packClusterTexels); throws
-  // NotSupportedError past the device's maxTexelBufferElements. True when
-  // the buffer was made anew: its descriptor must be written again.
-  bool write(const lighting::Frame& frame);
-  // Binding 2 of `set`, for updateDescriptorSets while this lives.
-  vk::WriteDescriptorSet descriptorWrite(vk::DescriptorSet set) const;
+  // Writes `frame`'s texels (lighting::packClusterTexels), between
+  // submissions (the set is not in use when it moves to a larger buffer);
+  // throws NotSupportedError past the device's maxTexelBufferElements.
+  void write(const lighting::Frame& frame);
+  vk::DescriptorSet set() const { return *descriptors_.sets.front(); }
 
  private:
   void allocate(vk::DeviceSize texels);
 
   const VulkanDevice& device_;
+  DescriptorSets descriptors_;
   std::optional<HostBuffer> buffer_;
   vk::raii::BufferView view_{nullptr};
-  vk::BufferView viewHandle_;  // what the descriptor write points at
   vk::DeviceSize capacity_ = 0;  // in texels
 };
 

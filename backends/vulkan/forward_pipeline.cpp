@@ -13,19 +13,18 @@ namespace backends::vulkan {
 ForwardPipelines::ForwardPipelines(const VulkanDevice& device, const PipelineCacheFile& cache)
     : builder_(device, cache),
       stages_(device.device, shaders::forwardVertexSpirv(), shaders::forwardFragmentSpirv()) {
-  // Set 0: the scene's uniforms, and the clustered mode's lists (binding 2).
-  const std::array<vk::DescriptorSetLayoutBinding, 2> scene = SceneUniforms::layoutBindings();
-  const std::array<vk::DescriptorSetLayoutBinding, 3> bindings{scene[0], scene[1], ClusterLists::layoutBinding()};
+  const std::array<vk::DescriptorSetLayoutBinding, 2> bindings = SceneUniforms::layoutBindings();
   setLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
   // Set 1 is in every pipeline's layout: the fragment stage's SPIR-V declares
   // the map samplers whatever the LIGHTMAP and SHADOW_MASK constants say.
   mapsSetLayout_ = createBakedMapsSetLayout(device.device);
-  // Set 3 likewise (the cookies and shadow maps): the shaders share one set number with the
-  // deferred passes, whose set 2 forward has no use for, so set 2 is empty.
-  emptySetLayout_ = vk::raii::DescriptorSetLayout(device.device, vk::DescriptorSetLayoutCreateInfo{});
+  // Set 2 is the pass's own input, as in the deferred passes (their G-buffer):
+  // here the clustered mode's lists, one texel when the frame has none.
+  clusterListsSetLayout_ = ClusterLists::createSetLayout(device.device);
+  // Set 3 likewise (the cookies and shadow maps), one set number with the deferred passes.
   lightTextureSetLayout_ = createLightTextureSetLayout(device.device);
-  const std::array<vk::DescriptorSetLayout, 4> setLayouts{*setLayout_, *mapsSetLayout_, *emptySetLayout_,
+  const std::array<vk::DescriptorSetLayout, 4> setLayouts{*setLayout_, *mapsSetLayout_, *clusterListsSetLayout_,
                                                           *lightTextureSetLayout_};
   layout_ = vk::raii::PipelineLayout(
       device.device, vk::PipelineLayoutCreateInfo{.setLayoutCount = setLayouts.size(), .pSetLayouts = setLayouts.data()});

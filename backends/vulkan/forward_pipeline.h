@@ -1,6 +1,7 @@
 // The forward pipeline: its descriptor set layouts (set 0: the scene's
-// uniforms, scene_uniforms.h, and the clustered mode's lists, cluster_lists.h; set 1: the object's baked maps,
-// baked_textures.h; set 2: empty, the deferred path's G-buffer set; set 3:
+// uniforms, scene_uniforms.h; set 1: the object's baked maps,
+// baked_textures.h; set 2: the clustered mode's lists, cluster_lists.h, where
+// the deferred passes have their G-buffer; set 3:
 // the cookies and shadow maps, light_texture_set.h), forward.vert and forward.frag, and one pipeline per set
 // of specialization constants, built on first use (pipeline_builder.h).
 #pragma once
@@ -20,6 +21,7 @@ class ForwardPipelines {
 
   const vk::raii::DescriptorSetLayout& setLayout() const { return setLayout_; }
   const vk::raii::DescriptorSetLayout& mapsSetLayout() const { return mapsSetLayout_; }
+  const vk::raii::DescriptorSetLayout& clusterListsSetLayout() const { return clusterListsSetLayout_; }
   const vk::raii::DescriptorSetLayout& lightTextureSetLayout() const { return lightTextureSetLayout_; }
   const vk::raii::PipelineLayout& layout() const { return layout_; }
   bool contains(const shaders::ConstantValues& constants) const { return pipelines_.contains(constants); }
@@ -32,7 +34,7 @@ class ForwardPipelines {
   ShaderStages stages_;
   vk::raii::DescriptorSetLayout setLayout_{nullptr};
   vk::raii::DescriptorSetLayout mapsSetLayout_{nullptr};
-  vk::raii::DescriptorSetLayout emptySetLayout_{nullptr};
+  vk::raii::DescriptorSetLayout clusterListsSetLayout_{nullptr};
   vk::raii::DescriptorSetLayout lightTextureSetLayout_{nullptr};
   vk::raii::PipelineLayout layout_{nullptr};
   std::map<shaders::ConstantValues, vk::raii::Pipeline> pipelines_;

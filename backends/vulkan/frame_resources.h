@@ -4,7 +4,6 @@
 // object count grows.
 #pragma once
 
-#include "backends/vulkan/cluster_lists.h"
 #include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
 #include "backends/vulkan/scene_uniforms.h"
@@ -20,22 +19,17 @@ struct RenderTarget {
 };
 
 // Set 0 of the forward pipeline (forward_pipeline.h): bindings 0 and 1 at the
-// scene's uniforms, binding 2 at the clustered mode's lists.
+// scene's uniforms.
 class ForwardUniforms {
  public:
   ForwardUniforms(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout, std::size_t objectCapacity);
-
-  // The scene's uniforms and the cluster lists of `frame`.
-  void write(const lighting::Frame& frame);
 
   SceneUniforms& scene() { return scene_; }
   const SceneUniforms& scene() const { return scene_; }
   const vk::raii::DescriptorSet& descriptorSet() const { return descriptors_.sets.front(); }
 
  private:
-  const VulkanDevice& device_;
   SceneUniforms scene_;
-  ClusterLists clusters_;
   DescriptorSets descriptors_;  // the one set pointing at the buffers
 };
 
