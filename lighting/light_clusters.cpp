@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace lighting {
 namespace {
@@ -28,31 +30,53 @@ Vec3 viewPointAt(const CameraView& view, double ndcX, double ndcY, double z) {
   return toView(view, ray.origin + t * ray.direction);
 }
 
+// The corners of every cluster: the view-space points where the rays
+// through the tile grid's lines (pixel x = i * tileSize, y = j * tileSize,
+// clamped to the image) cross the slice boundaries, (tilesX + 1) x
+// (tilesY + 1) x (slices + 1) of them, each shared by up to eight clusters.
+class ClusterCorners {
+ public:
+  ClusterCorners(const CameraView& view, const ClusterGrid& grid)
+      : across_(grid.tilesX + 1), down_(grid.tilesY + 1), points_(std::size_t(across_) * down_ * (grid.slices + 1)) {
+    for (int s = 0; s <= grid.slices; ++s) {
+      const double z = grid.sliceStart(s);
+      for (int j = 0; j < down_; ++j) {
+        const double ndcY = 1.0 - 2.0 * std::min(view.height, j * grid.tileSize) / view.height;
+        for (int i = 0; i < across_; ++i) {
+          const double ndcX = 2.0 * std::min(view.width, i * grid.tileSize) / view.width - 1.0;
+          points_[index(i, j, s)] = viewPointAt(view, ndcX, ndcY, z);
+        }
+      }
+    }
+  }
+  const Vec3& at(int i, int j, int s) const { return points_[index(i, j, s)]; }
+
+ private:
+  std::size_t index(int i, int j, int s) const { return (std::size_t(s) * down_ + j) * across_ + i; }
+  int across_, down_;
+  std::vector<Vec3> points_;
+};
+
 // The padded box around the part of the view frustum that tile (tx, ty)
-// and slice s cover: the eight corners of that frustum piece (a convex
-// hull, so its box holds it), grown by kClusterPadding of its largest
-// coordinate.
-ViewBox clusterBox(const CameraView& view, const ClusterGrid& grid, int tx, int ty, int s) {
-  const int x0 = tx * grid.tileSize, x1 = std::min(view.width, x0 + grid.tileSize);
-  const int y0 = ty * grid.tileSize, y1 = std::min(view.height, y0 + grid.tileSize);
-  const std::array<double, 2> ndcX = {2.0 * x0 / view.width - 1.0, 2.0 * x1 / view.width - 1.0};
-  const std::array<double, 2> ndcY = {1.0 - 2.0 * y0 / view.height, 1.0 - 2.0 * y1 / view.height};
-  const std::array<double, 2> depth = {grid.sliceStart(s), grid.sliceStart(s + 1)};
+// and slice s cover: its eight corners (a convex hull, so their box holds
+// it), grown by kClusterPadding of its largest coordinate.
+ViewBox clusterBox(const ClusterCorners& corners, int tx, int ty, int s) {
   ViewBox box{Vec3(INFINITY), Vec3(-INFINITY)};
   double largest = 0;
-  for (const double x : ndcX)
-    for (const double y : ndcY)
-      for (const double z : depth) {
-        const Vec3 p = viewPointAt(view, x, y, z);
-        box.lo = glm::min(box.lo, p);
-        box.hi = glm::max(box.hi, p);
-        largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-      }
+  for (int k = 0; k < 8; ++k) {
+    const Vec3& p = corners.at(tx + (k & 1), ty + ((k >> 1) & 1), s + (k >> 2));
+    box.lo = glm::min(box.lo, p);
+    box.hi = glm::max(box.hi, p);
+    largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  }
   const Vec3 pad(kClusterPadding * largest);
   box.lo -= pad;
   box.hi += pad;
   return box;
 }
+
+// Whether the interval [lo, hi] comes within `radius` of c.
+bool withinReach(double c, double radius, double lo, double hi) { return c + radius >= lo && c - radius <= hi; }
 
 // Whether a sphere and a box share a point: the squared distance from the
 // centre to the box's nearest point against r^2.
@@ -118,42 +142,70 @@ LightClusters binLights(const Frame& frame, const ClusterGridSpec& spec) {
   out.grid = clusterGridFor(view, spec);
   const ClusterGrid& grid = out.grid;
 
+  const ClusterCorners corners(view, grid);
   std::vector<ViewBox> boxes(std::size_t(grid.clusterCount()));
   for (int s = 0; s < grid.slices; ++s)
     for (int ty = 0; ty < grid.tilesY; ++ty)
-      for (int tx = 0; tx < grid.tilesX; ++tx) boxes[grid.clusterIndex(tx, ty, s)] = clusterBox(view, grid, tx, ty, s);
-  // The z range of each slice's boxes (the same for every tile of a
-  // perspective slice up to padding): a light outside it skips the slice.
-  std::vector<double> sliceLo(grid.slices, INFINITY), sliceHi(grid.slices, -INFINITY);
+      for (int tx = 0; tx < grid.tilesX; ++tx) boxes[grid.clusterIndex(tx, ty, s)] = clusterBox(corners, tx, ty, s);
+  // Per slice, the z range of its boxes, and per column (row) of tiles the
+  // x (y) range of its boxes: a box lies in the slab of its slice, column and
+  // row, so a light that misses one of them misses the box, and the sphere
+  // test runs only where all three reach (what makes the binning cost grow
+  // with the lights' footprints, not with the cluster count).
+  const std::size_t slices = std::size_t(grid.slices);
+  std::vector<double> sliceLo(slices, INFINITY), sliceHi(slices, -INFINITY);
+  std::vector<double> columnLo(slices * grid.tilesX, INFINITY), columnHi(slices * grid.tilesX, -INFINITY);
+  std::vector<double> rowLo(slices * grid.tilesY, INFINITY), rowHi(slices * grid.tilesY, -INFINITY);
   for (int s = 0; s < grid.slices; ++s)
-    for (int t = 0; t < grid.tilesX * grid.tilesY; ++t) {
-      const ViewBox& b = boxes[std::size_t(s) * grid.tilesX * grid.tilesY + t];
-      sliceLo[s] = std::min(sliceLo[s], b.lo.z);
-      sliceHi[s] = std::max(sliceHi[s], b.hi.z);
-    }
+    for (int ty = 0; ty < grid.tilesY; ++ty)
+      for (int tx = 0; tx < grid.tilesX; ++tx) {
+        const ViewBox& b = boxes[std::size_t(grid.clusterIndex(tx, ty, s))];
+        const std::size_t column = std::size_t(s) * grid.tilesX + tx, row = std::size_t(s) * grid.tilesY + ty;
+        sliceLo[s] = std::min(sliceLo[s], b.lo.z);
+        sliceHi[s] = std::max(sliceHi[s], b.hi.z);
+        columnLo[column] = std::min(columnLo[column], b.lo.x);
+        columnHi[column] = std::max(columnHi[column], b.hi.x);
+        rowLo[row] = std::min(rowLo[row], b.lo.y);
+        rowHi[row] = std::max(rowHi[row], b.hi.y);
+      }
 
-  std::vector<std::vector<std::uint32_t>> perCluster(boxes.size());
+  // (cluster, light) pairs in packed light order, then a stable counting
+  // sort by cluster: each list keeps packed order, with no list per cluster.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::vector<int> rows;
   const std::vector<int>& packed = frame.selection.packed.other;
   for (std::size_t k = 0; k < packed.size(); ++k) {
     const Light& light = sceneLights[std::size_t(packed[k])];
     const Vec3 centre = toView(view, light.position);
     const double radius = light.range * (1.0 + kClusterPadding);
     for (int s = 0; s < grid.slices; ++s) {
-      if (centre.z + radius < sliceLo[s] || centre.z - radius > sliceHi[s]) continue;
-      for (int ty = 0; ty < grid.tilesY; ++ty)
-        for (int tx = 0; tx < grid.tilesX; ++tx) {
+      if (!withinReach(centre.z, radius, sliceLo[s], sliceHi[s])) continue;
+      rows.clear();
+      for (int ty = 0; ty < grid.tilesY; ++ty) {
+        const std::size_t row = std::size_t(s) * grid.tilesY + ty;
+        if (withinReach(centre.y, radius, rowLo[row], rowHi[row])) rows.push_back(ty);
+      }
+      for (int tx = 0; tx < grid.tilesX; ++tx) {
+        const std::size_t column = std::size_t(s) * grid.tilesX + tx;
+        if (!withinReach(centre.x, radius, columnLo[column], columnHi[column])) continue;
+        for (const int ty : rows) {
           const int c = grid.clusterIndex(tx, ty, s);
-          if (sphereTouchesBox(centre, radius, boxes[std::size_t(c)])) perCluster[std::size_t(c)].push_back(std::uint32_t(k));
+          if (sphereTouchesBox(centre, radius, boxes[std::size_t(c)])) pairs.emplace_back(std::uint32_t(c), std::uint32_t(k));
         }
+      }
     }
   }
-  out.first.reserve(perCluster.size());
-  out.count.reserve(perCluster.size());
-  for (const std::vector<std::uint32_t>& list : perCluster) {
-    out.first.push_back(std::uint32_t(out.lights.size()));
-    out.count.push_back(std::uint32_t(list.size()));
-    out.lights.insert(out.lights.end(), list.begin(), list.end());
+  out.count.assign(boxes.size(), 0);
+  for (const auto& [cluster, light] : pairs) ++out.count[cluster];
+  out.first.resize(boxes.size());
+  std::uint32_t next = 0;
+  for (std::size_t c = 0; c < boxes.size(); ++c) {
+    out.first[c] = next;
+    next += out.count[c];
   }
+  out.lights.resize(pairs.size());
+  std::vector<std::uint32_t> filled(out.first);
+  for (const auto& [cluster, light] : pairs) out.lights[filled[cluster]++] = light;
   return out;
 }
 
