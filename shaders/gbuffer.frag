@@ -13,6 +13,7 @@ layout(location = 0) in vec3 vPosition;
 layout(location = 1) in vec3 vNormal;
 layout(location = 2) in vec3 vVertexLighting;
 layout(location = 3) in vec2 vLightmapUv;
+layout(location = 4) in vec4 vClip;  // forward.vert's, for the clustered mode; declared so the interfaces match
 
 layout(location = 0) out vec4 outAlbedo;  // rgb albedo, a = 1 (cleared to 0: background)
 layout(location = 1) out vec4 outNormal;  // xyz normalize(vNormal), w = window depth

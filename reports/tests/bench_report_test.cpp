@@ -176,8 +176,17 @@ TEST_F(BenchPages, ParetoPointsAreTheHandDerivedOnes) {
   EXPECT_NE(index.find("<tr class=\"front\"><td>vulkan</td><td>all-lights</td><td>yes</td><td class=\"n\">10</td>"
                        "<td class=\"n\">5</td><td class=\"n\">9.8</td><td class=\"n\">10.5</td>"
                        "<td class=\"n\">2.68</td><td class=\"n\">5</td><td class=\"n\">0.0001"
-                       "</td><td class=\"n\">0.002</td><td class=\"n\">60.5</td><td class=\"n\">20</td></tr>"),
+                       "</td><td class=\"n\">0.002</td><td class=\"n\">60.5</td><td class=\"n\">20</td>"
+                       // x two-term: 10 ms over a P + b P L = 0.5 + 0.1 * 12.5 = 1.75 ms (bench_sample.cpp).
+                       "<td class=\"n\">5.71</td></tr>"),
             std::string::npos);
+  // The fit itself: 5 points, a = 0.5 ms / 921600 = 0.5425 ns a pixel, b = 0.1 ms / 921600 = 0.1085 ns a
+  // pixel-light; gl-egl's curve has no pixel counters, so no fit and no row.
+  EXPECT_NE(index.find("<tr><td>vulkan</td><td>5</td><td>0.543</td><td>0.109</td>"), std::string::npos);
+  const std::size_t twoTerm = index.find("id=\"two-term\"");
+  ASSERT_NE(twoTerm, std::string::npos);
+  const std::string twoTermTable = index.substr(twoTerm, index.find("</table>", twoTerm) - twoTerm);
+  EXPECT_EQ(count(twoTermTable, "<tr><td>"), 1) << twoTermTable;
 }
 
 TEST_F(BenchPages, MetadataTablesAndFits) {

@@ -141,7 +141,7 @@ TEST(CookieField, UploadSizesFitTheSlots) {
 TEST(FieldModes, SecondContextPathHasTheLightPathModesOnly) {
   std::set<std::string> names;
   for (const bench::FieldModeSpec& mode : bench::fieldModeSpecs(false, false, true)) names.insert(mode.name);
-  EXPECT_EQ(names, (std::set<std::string>{"all-lights", "per-object", "legacy-4+4", "deferred-hdr32", "deferred-hdr16",
+  EXPECT_EQ(names, (std::set<std::string>{"all-lights", "per-object", "clustered", "legacy-4+4", "deferred-hdr32", "deferred-hdr16",
                                           "deferred-ldr8"}));
 }
 
