@@ -132,10 +132,8 @@ void twoTermSection(std::ostream& out, const BenchModel& m, const Entries& candi
          "rate. <code>\u00d7 two-term</code> in the speed-against-error tables is each mode's median over "
          "<code>a \u00b7 pixels + b \u00b7 pixels \u00b7 lights_per_pixel</code> of its own load: near 1, the "
          "mode costs what its load predicts; above, it pays for something the two terms do not count.</p>\n";
-  std::vector<std::string> shown;
-  for (const BenchEntry* e : candidates)
-    if (m.twoTerm.contains(backendOf(*e)) && std::find(shown.begin(), shown.end(), backendOf(*e)) == shown.end())
-      shown.push_back(backendOf(*e));
+  std::vector<std::string> shown = backendsOf(candidates);
+  std::erase_if(shown, [&m](const std::string& backend) { return !m.twoTerm.contains(backend); });
   if (shown.empty()) {
     out << "<p>No backend has an all-lights light curve to fit.</p>\n";
     return;

@@ -74,6 +74,13 @@ std::optional<double> limitRatio(const BenchEntry& e) {
 
 std::string backendOf(const BenchEntry& e) { return e.section.empty() ? e.name.backend : e.section; }
 
+std::vector<std::string> backendsOf(const Entries& entries) {
+  std::vector<std::string> backends;
+  for (const BenchEntry* e : entries)
+    if (std::find(backends.begin(), backends.end(), backendOf(*e)) == backends.end()) backends.push_back(backendOf(*e));
+  return backends;
+}
+
 bool isPrepare(const BenchEntry& e) { return e.name.kind == "prepare"; }
 
 bool isBroken(const BenchEntry& e) {

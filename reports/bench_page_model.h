@@ -52,6 +52,8 @@ std::optional<double> limitRatio(const BenchEntry& e);
 std::optional<double> twoTermRatio(const BenchModel& m, const BenchEntry& e);
 // The bench.json section it came from, else the backend its name says.
 std::string backendOf(const BenchEntry& e);
+// The backends of `entries` (backendOf), each once, in the order they first appear.
+std::vector<std::string> backendsOf(const Entries& entries);
 
 bool isPrepare(const BenchEntry& e);
 // A benchmark whose image had NaN or infinite pixels (err_nonfinite_pixels

@@ -177,9 +177,7 @@ void shadowMapSection(std::ostream& out, const BenchModel& m, const Entries& can
          "the error is what a map's resolution and filter cost against exact shadows. The front is what is worth "
          "choosing; <code>shadow pass ms</code> is the shadow passes' share of the frame, timed apart. "
          "<code>shadow-lights</code>, the same lights casting nothing, is on the scatter above.</p>\n";
-  std::vector<std::string> backends;
-  for (const BenchEntry* e : shadowModes)
-    if (std::find(backends.begin(), backends.end(), backendOf(*e)) == backends.end()) backends.push_back(backendOf(*e));
+  const std::vector<std::string> backends = backendsOf(shadowModes);
   for (const std::string& backend : backends) {
     const Entries mine = filter(shadowModes, [&](const BenchEntry& e) { return backendOf(e) == backend; });
     const Entries withError = filter(mine, hasError);
