@@ -88,7 +88,9 @@ TEST(FadeSelection, SixtyFiveOnALineFadeTheLastEight) {
     if (k >= 56) expected = (5184.0 - (8.0 + k) * (8.0 + k)) / 1215.0;
     if (k == 64) expected = 0;  // dropped
     EXPECT_EQ(v.weight, expected) << "light " << k;
-    if (k < 64) EXPECT_EQ(f.selection.packed.otherWeight[k], expected) << "light " << k;
+    if (k < 64) {
+      EXPECT_EQ(f.selection.packed.otherWeight[k], expected) << "light " << k;
+    }
   }
   EXPECT_EQ(f.selection.visible[63].weight, 143.0 / 1215.0);  // 5184 - 71^2
   EXPECT_EQ(f.selection.visible[56].weight, 1088.0 / 1215.0);  // 5184 - 64^2
