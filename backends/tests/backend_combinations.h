@@ -14,12 +14,20 @@
 #include <string>
 #include <vector>
 
+namespace backends {
+
+// How gtest prints a combination in messages and in the names ctest lists
+// ("# GetParam() = vulkan"). In the type's own namespace, where gtest's
+// argument-dependent lookup finds it (in backends::testing it was never
+// found, and gtest printed the struct's bytes).
+inline void PrintTo(const BackendCombination& c, std::ostream* out) { *out << c.suffix; }
+
+}  // namespace backends
+
 namespace backends::testing {
 
 using Combination = backends::BackendCombination;
 
-// How gtest prints a combination in messages.
-inline void PrintTo(const Combination& c, std::ostream* out) { *out << c.suffix; }
 // How gtest names a combination's test: its suffix as an identifier.
 inline std::string combinationTestName(const ::testing::TestParamInfo<Combination>& info) {
   return info.param.identifier();
