@@ -30,15 +30,22 @@ const backends::BackendEntry* resolveBackend(const std::string& name, std::ostre
 
 std::optional<lighting::ClusterGridSpec> clusteredMode(const BackendArguments& args) {
   if (args.mode != lighting::kClusteredModeName) return std::nullopt;
-  return lighting::ClusterGridSpec{.tileSize = args.clusterTile, .depthSlices = args.clusterSlices};
+  return args.clusterGrid;
+}
+
+void checkModeDraws(const lighting::Frame& frame, const BackendArguments& args) {
+  if (!clusteredMode(args)) return;
+  if (const auto refusal = lighting::clusteredModeRefusal(frame))
+    throw InputError(std::string("--mode ") + lighting::kClusteredModeName + ": " + *refusal);
 }
 
 lighting::Frame frameInMode(lighting::Frame frame, const BackendArguments& args) {
-  if (const auto spec = clusteredMode(args)) {
+  checkModeDraws(frame, args);
+  if (const auto grid = clusteredMode(args)) {
     try {
-      lighting::useLightClusters(frame, *spec);
-    } catch (const std::invalid_argument& e) {
-      throw InputError("--mode clustered: " + std::string(e.what()));
+      lighting::useLightClusters(frame, *grid);
+    } catch (const std::invalid_argument& e) {  // a grid below 1 (the command line refuses one)
+      throw InputError(std::string("--mode ") + lighting::kClusteredModeName + ": " + e.what());
     }
   }
   return frame;

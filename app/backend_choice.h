@@ -7,9 +7,8 @@
 #include "backends/backend.h"
 #include "lighting/light_clusters.h"
 
-#include <optional>
-
 #include <memory>
+#include <optional>
 #include <ostream>
 
 namespace app {
@@ -24,9 +23,11 @@ backends::BackendOptions backendOptions(const BackendArguments& args);
 
 // The cluster grid of --mode clustered; nullopt for the model's mode.
 std::optional<lighting::ClusterGridSpec> clusteredMode(const BackendArguments& args);
+// Throws InputError when --mode cannot draw `frame` (the clustered mode:
+// legacy, deferred, per-object lists; lighting::clusteredModeRefusal).
+void checkModeDraws(const lighting::Frame& frame, const BackendArguments& args);
 // `frame` as --mode draws it: the model's frame, or its clustered form.
-// Throws InputError for a scene the clustered mode cannot draw (legacy,
-// deferred, per-object lists) or a grid below 1.
+// Throws InputError as checkModeDraws does, or for a grid below 1.
 lighting::Frame frameInMode(lighting::Frame frame, const BackendArguments& args);
 
 // The test's name for this scene and backend: <group>.<name>.<backend> (SPEC 10),

@@ -64,7 +64,7 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
                       std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     const SceneInput input = loadSceneInput(args);
-    frameInMode(input.frame, backend);  // a scene the mode cannot draw is bad input (exit 2), before any driver
+    checkModeDraws(input.frame, backend);  // a scene the mode cannot draw is bad input (exit 2), before any driver
     std::unique_ptr<backends::Backend> renderer;
     if (int status = createBackend(backend, err, renderer); status != kExitSuccess) return status;
     // Every frame of an animated scene unless --frame picks one (SPEC 10:

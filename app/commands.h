@@ -3,6 +3,7 @@
 // `err` with a message a user can act on.
 #pragma once
 
+#include "lighting/light_clusters.h"
 #include "runner/bench_run.h"
 #include "runner/run_merge.h"
 #include "runner/suite_run.h"
@@ -13,6 +14,9 @@
 #include <vector>
 
 namespace app {
+
+// --mode's default: SPEC's own light loops.
+inline constexpr const char* kModelModeName = "model";
 
 struct SceneArguments {
   std::string scenePath;
@@ -46,13 +50,12 @@ struct BackendArguments {
   // --expect-driver (docs/vendors.md): the loaded device's name, driver or
   // driver version must contain this text, or the command fails (exit 4).
   std::string expectDriver{};
-  // --mode (extension, docs/cli.md): "model", the model as SPEC specifies
-  // it (the default), or "clustered", the Forward+ benchmark mode (issue 21,
-  // lighting/light_clusters.h) with --cluster-tile pixels a tile side and
-  // --cluster-slices depth slices.
-  std::string mode = "model";
-  int clusterTile = 16;
-  int clusterSlices = 16;
+  // --mode (extension, docs/cli.md): kModelModeName, the model as SPEC
+  // specifies it (the default), or lighting::kClusteredModeName, the Forward+
+  // benchmark mode (issue 21, lighting/light_clusters.h) with this grid
+  // (--cluster-tile pixels a tile side, --cluster-slices depth slices).
+  std::string mode = kModelModeName;
+  lighting::ClusterGridSpec clusterGrid{};
 };
 int runRenderCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& outFile,
                      std::ostream& out, std::ostream& err);

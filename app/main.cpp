@@ -54,13 +54,13 @@ int main(int argc, char** argv) {
     sub->add_option("--mode", backend.mode,
                     "model (SPEC's light loops, the default) | clustered (Forward+: each pixel loops over its "
                     "screen tile's and depth slice's lights; srp forward scenes without per-object lists)")
-        ->default_val("model")
-        ->check(CLI::IsMember({std::string("model"), std::string(lighting::kClusteredModeName)}));
-    sub->add_option("--cluster-tile", backend.clusterTile, "--mode clustered: tile side in pixels")
-        ->default_val(16)
+        ->capture_default_str()
+        ->check(CLI::IsMember({std::string(app::kModelModeName), std::string(lighting::kClusteredModeName)}));
+    sub->add_option("--cluster-tile", backend.clusterGrid.tileSize, "--mode clustered: tile side in pixels")
+        ->capture_default_str()
         ->check(CLI::PositiveNumber);
-    sub->add_option("--cluster-slices", backend.clusterSlices, "--mode clustered: depth slices")
-        ->default_val(16)
+    sub->add_option("--cluster-slices", backend.clusterGrid.depthSlices, "--mode clustered: depth slices")
+        ->capture_default_str()
         ->check(CLI::PositiveNumber);
   };
 

@@ -86,6 +86,10 @@ std::vector<std::uint32_t> packClusterTexels(const LightClusters& clusters) {
   return texels;
 }
 
+std::vector<std::uint32_t> packFrameClusterTexels(const Frame& frame) {
+  return frame.clusters ? packClusterTexels(*frame.clusters) : std::vector<std::uint32_t>{0};
+}
+
 GpuObjectBlock packObjectBlock(const Frame& frame, int object) {
   const Object& obj = frame.scene().objects[object];
   const ObjectGeometry& geometry = frame.prepared->objects[object];

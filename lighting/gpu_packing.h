@@ -107,6 +107,10 @@ std::vector<GpuVertex> packVertices(const Mesh& mesh);
 // (into FrameBlock.otherLights) follow all the headers. Throws
 // std::length_error past 2^24 texels (what `first` can address).
 std::vector<std::uint32_t> packClusterTexels(const LightClusters& clusters);
+// What a backend uploads for `frame`: its clusters' texels in the clustered
+// mode, one zero texel otherwise (the full shader declares the lists
+// whatever the frame draws, so the binding must always be valid).
+std::vector<std::uint32_t> packFrameClusterTexels(const Frame& frame);
 constexpr int kClusterCountBits = 8;  // a cluster lists at most 64 lights (kGpuMaxOtherLights)
 std::vector<std::uint32_t> packIndices(const Mesh& mesh);
 

@@ -209,15 +209,17 @@ LightClusters binLights(const Frame& frame, const ClusterGridSpec& spec) {
   return out;
 }
 
-void useLightClusters(Frame& frame, const ClusterGridSpec& spec) {
+std::optional<std::string> clusteredModeRefusal(const Frame& frame) {
   const Pipeline& pipeline = frame.scene().pipeline;
-  if (pipeline.profile != Profile::Srp)
-    throw std::invalid_argument("light clusters: the clustered mode draws the srp profile only; the scene is legacy");
-  if (pipeline.path != RenderPath::Forward)
-    throw std::invalid_argument("light clusters: the clustered mode is a forward path; the scene is deferred");
+  if (pipeline.profile != Profile::Srp) return "the clustered mode draws the srp profile only; the scene is legacy";
+  if (pipeline.path != RenderPath::Forward) return "the clustered mode is a forward path; the scene is deferred";
   if (!frame.objectLists.empty() || frame.features.perObjectLists)
-    throw std::invalid_argument("light clusters: the clustered mode replaces the all-lights loop; the scene uses "
-                                "per-object lists");
+    return "the clustered mode replaces the all-lights loop; the scene uses per-object lists";
+  return std::nullopt;
+}
+
+void useLightClusters(Frame& frame, const ClusterGridSpec& spec) {
+  if (const auto refusal = clusteredModeRefusal(frame)) throw std::invalid_argument("light clusters: " + *refusal);
   frame.clusters = std::make_shared<const LightClusters>(binLights(frame, spec));
   frame.features.clusteredLights = true;
 }

@@ -19,6 +19,8 @@
 #include "lighting/frame.h"
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace lighting {
@@ -85,12 +87,16 @@ struct LightClusters {
 // for a tile size or slice count below 1 and for a legacy-profile frame.
 LightClusters binLights(const Frame& frame, const ClusterGridSpec& spec);
 
+// Why the clustered mode cannot draw `frame` (the legacy profile, the
+// deferred path, per-object lists: each already loops over fewer lights than
+// a cluster may hold), or nullopt when it can. Cheap: no binning.
+std::optional<std::string> clusteredModeRefusal(const Frame& frame);
+
 // Turns `frame` into its clustered form: bins its lights (binLights), keeps
 // the lists in frame.clusters and sets features.clusteredLights, so a backend
 // draws each fragment over its cluster's lights; nothing else changes (the
 // same kept lights, the same ideal). Throws std::invalid_argument for a frame
-// the mode does not draw: the legacy profile, the deferred path, per-object
-// lists (each already loops over fewer lights than a cluster may hold).
+// the mode does not draw (clusteredModeRefusal) or a grid below 1.
 void useLightClusters(Frame& frame, const ClusterGridSpec& spec);
 
 }  // namespace lighting

@@ -38,7 +38,8 @@ int clusterOf(vec4 clip, vec3 p) {
   return (slice * grid.y + tile.y) * grid.x + tile.x;
 }
 
-// The cluster's header: x the texel of its first light index, y the count.
+// The cluster's header: x the texel of its first light index, y the count
+// (lighting::kClusterCountBits = 8 low bits; the shader cannot include C++).
 ivec2 clusterRange(int cluster) {
   uint header = texelFetch(clusterLists, cluster).r;
   return ivec2(int(header >> 8), int(header & 255u));

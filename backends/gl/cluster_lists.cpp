@@ -32,8 +32,7 @@ ClusterLists::ClusterLists(const GlFunctions& gl)
 }
 
 void ClusterLists::update(const lighting::Frame& frame) {
-  const std::vector<std::uint32_t> texels =
-      frame.clusters ? lighting::packClusterTexels(*frame.clusters) : std::vector<std::uint32_t>{0};
+  const std::vector<std::uint32_t> texels = lighting::packFrameClusterTexels(frame);
   if (texels.size() > std::size_t(maxTexels_))
     throw NotSupportedError("the clustered mode's lists are " + std::to_string(texels.size()) +
                             " texels; this driver's texture buffers hold " + std::to_string(maxTexels_) +

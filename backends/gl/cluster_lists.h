@@ -22,7 +22,7 @@ class ClusterLists {
  public:
   explicit ClusterLists(const GlFunctions& gl);
 
-  // Uploads `frame`'s texels (lighting::packClusterTexels) and binds the
+  // Uploads `frame`'s texels (lighting::packFrameClusterTexels) and binds the
   // texture to kClusterListsUnit; throws NotSupportedError past the driver's
   // GL_MAX_TEXTURE_BUFFER_SIZE.
   void update(const lighting::Frame& frame);

@@ -26,8 +26,7 @@ ClusterLists::ClusterLists(const VulkanDevice& device, const vk::raii::Descripto
 }
 
 void ClusterLists::write(const lighting::Frame& frame) {
-  const std::vector<std::uint32_t> texels =
-      frame.clusters ? lighting::packClusterTexels(*frame.clusters) : std::vector<std::uint32_t>{0};
+  const std::vector<std::uint32_t> texels = lighting::packFrameClusterTexels(frame);
   const vk::DeviceSize needed = texels.size();
   if (needed > device_.limits.maxTexelBufferElements)
     throw NotSupportedError("the clustered mode's lists are " + std::to_string(needed) +

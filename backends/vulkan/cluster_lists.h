@@ -25,7 +25,7 @@ class ClusterLists {
 
   ClusterLists(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout);
 
-  // Writes `frame`'s texels (lighting::packClusterTexels), between
+  // Writes `frame`'s texels (lighting::packFrameClusterTexels), between
   // submissions (the set is not in use when it moves to a larger buffer);
   // throws NotSupportedError past the device's maxTexelBufferElements.
   void write(const lighting::Frame& frame);

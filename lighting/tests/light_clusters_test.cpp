@@ -13,8 +13,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <stdexcept>
 

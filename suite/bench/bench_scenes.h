@@ -113,9 +113,6 @@ inline constexpr double kFieldShadowDepthBias = 0.05, kFieldShadowNormalBias = 0
 inline constexpr int kShadowResolutions[] = {256, 512, 1024, 2048, 4096};
 inline constexpr int kFilteredShadowResolutions[] = {256, 1024, 4096};
 
-// The srp material of the field's specular modes: a highlight of a few
-// pixels under each light seen from straight above (smoothness 0.8), with a
-// coloured F0 (metallic 0.3 of the tiles' and boxes' albedo).
 // The dense field (issue 21): every range 5.5 times the 64-light field's
 // (0.85 -> 4.675 on 1.6 x 0.9 cells), so every tile and box is touched by 23
 // lights or more (a corner tile the fewest; docs/bench-format.md derives it):
@@ -124,6 +121,9 @@ inline constexpr int kFilteredShadowResolutions[] = {256, 1024, 4096};
 inline constexpr double kDenseFieldRangeScale = 5.5;
 inline constexpr int kDenseFieldLeastObjectLights = 20;  // what the issue asks of every object
 
+// The srp material of the field's specular modes: a highlight of a few
+// pixels under each light seen from straight above (smoothness 0.8), with a
+// coloured F0 (metallic 0.3 of the tiles' and boxes' albedo).
 inline constexpr double kFieldMetallic = 0.3;
 inline constexpr double kFieldSmoothness = 0.8;
 

@@ -12,7 +12,6 @@
 namespace bench {
 namespace {
 
-// A curve point of the synthetic field.
 // A curve point of the synthetic field; `clusters` for the clustered mode.
 std::shared_ptr<const BenchFrame> curveFrame(const FieldSpec& field, const std::string& name,
                                              std::optional<lighting::ClusterGridSpec> clusters = std::nullopt) {
