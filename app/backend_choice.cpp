@@ -72,8 +72,7 @@ std::string caseName(const std::string& scenePath, const BackendArguments& args)
   // The case ends in the combination's suffix (SPEC 10), from the one table;
   // a driver the table does not know keeps its name in the case, so two
   // such runs never share evidence.
-  const backends::BackendCombination* combination = backends::findCombination(args.backend, args.driver);
-  const std::string suffix = combination ? combination->suffix : args.backend + "-" + args.driver;
+  const std::string suffix = backends::combinationWithDriver(args.backend, args.driver).suffix;
   return path.parent_path().filename().string() + "." + path.stem().string() + "." + suffix;
 }
 

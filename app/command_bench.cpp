@@ -1,4 +1,4 @@
-// `lightcts bench` and `lightcts bench compare` (issue 7), and the hidden
+// `lightcts bench` and `lightcts bench compare`, and the hidden
 // `lightcts bench-worker` that `bench` starts once per backend combination.
 #include "app/commands.h"
 #include "app/exit_status.h"

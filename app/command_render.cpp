@@ -102,7 +102,8 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
     const std::string dir = evidenceDir.empty() ? "lightcts-evidence/" + name : evidenceDir;
     comparison::writeEvidence(dir, check.evidence().comparison, check.evidenceResult, check.evidenceReference, name,
                               &check.evidenceShadowMaps);
-    out << "evidence: " << dir << " (frame " << check.evidenceFrame << ")\n";
+    out << "evidence: " << dir << " (frame " << check.evidenceFrame << "); open " << dir
+        << "/viewer.html to swipe, zoom and probe it\n";
     return kExitConformanceFailure;
   });
 }

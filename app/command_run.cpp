@@ -1,5 +1,5 @@
 // `lightcts run` (SPEC 8), the hidden `lightcts worker` it starts, and
-// `lightcts merge` of its shards (issue 20).
+// `lightcts merge` of its shards (docs/ci.md).
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"

@@ -1,4 +1,4 @@
-// `lightcts run compare OLD NEW [--out DIR]` (issue 16, docs/cli.md): what
+// `lightcts run compare OLD NEW [--out DIR]` (docs/cli.md): what
 // changed between two runs' results.json. Both files are read and checked
 // before anything is written, so bad input (exit 2) leaves no page behind.
 #include "app/commands.h"

@@ -52,7 +52,7 @@ struct BackendArguments {
   std::string expectDriver{};
   // --mode (extension, docs/cli.md): kModelModeName, the model as SPEC
   // specifies it (the default), or lighting::kClusteredModeName, the Forward+
-  // benchmark mode (issue 21, lighting/light_clusters.h) with this grid
+  // benchmark mode (lighting/light_clusters.h) with this grid
   // (--cluster-tile pixels a tile side, --cluster-slices depth slices).
   std::string mode = kModelModeName;
   lighting::ClusterGridSpec clusterGrid{};
@@ -66,7 +66,7 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
 // `run` checks its options (unknown backend or mutant, bad scene: exit 2)
 // before any worker starts.
 int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::ostream& err);
-// `lightcts run compare OLD NEW [--out DIR]` (issue 16): regressions, fixes,
+// `lightcts run compare OLD NEW [--out DIR]`: regressions, fixes,
 // new and removed tests, tightness beyond 2x; DIR/index.html when `outDir` is
 // not empty. 0 no regression, 1 a regression, 2 a file missing, unreadable or
 // not a lightcts results.json (nothing written).

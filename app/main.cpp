@@ -112,10 +112,28 @@ int main(int argc, char** argv) {
       ->default_val(1)
       ->check(CLI::NonNegativeNumber);
   runCmd->add_flag("--flakes-fail", run.flakesFail, "A Flake (failed, then passed on a retry) fails the run");
+  runCmd->add_option("--driver", run.driver,
+                     "GL combinations: run them on this Mesa Gallium driver (llvmpipe, softpipe, zink, ...)")
+      ->check(mesaDriverName);
+  // Selection by name (SPEC 8): decided before sharding and before any worker starts.
+  runCmd->add_option("--include", run.includes,
+                     "Run only tests whose <group>.<name>.<backend> matches this shell glob (repeatable)");
+  runCmd->add_option("--exclude", run.excludes, "Leave out tests matching this shell glob (repeatable)");
+  runCmd->add_option("--caselist", run.caselists, "A file of test names or globs, one a line, '#' comments");
+  runCmd->add_flag("--list", run.listOnly, "Print the selected tests (with --shard, the shard's) and run nothing");
   runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
   runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
-  // Issue 20 (docs/ci.md): the cores of one machine, the machines of a CI job.
+  runCmd->add_flag("--mutants-all-scenes", run.mutantsAllScenes,
+                   "Check each mutant against every selected scene (the whole kill table), not only its killers");
+  runCmd->add_option("--evidence-limit", run.evidenceLimit,
+                     "Failures that keep their evidence images; every failure keeps its numbers")
+      ->default_val(50)
+      ->check(CLI::NonNegativeNumber);
+  runCmd->add_option("--evidence-url", run.evidenceUrl,
+                     "junit.xml links each failure's evidence page to this URL, {test} replaced by its name "
+                     "(default: the page's path in the run folder)");
+  // Parallel workers and shards (docs/ci.md): the cores of one machine, the machines of a CI job.
   runCmd->add_option("--jobs,-j", run.jobs, "Worker processes at once (default: one per core)")
       ->check(CLI::PositiveNumber);
   std::string shardText;
@@ -123,12 +141,12 @@ int main(int argc, char** argv) {
   runCmd->add_option("--timings", run.timingsFile, "An earlier results.json: balance the shards by its test times");
   runCmd->add_flag("--fresh-references", run.freshReferences,
                    "Compute every reference in this run (once, shared by its workers), not from the shared cache");
-  // `lightcts merge DIR... --out DIR` (issue 20, docs/ci.md).
+  // `lightcts merge DIR... --out DIR` (docs/ci.md).
   runner::MergeOptions merge;
   auto* mergeCmd = cli.add_subcommand("merge", "Merge the shards of one run into one results.json and report");
   mergeCmd->add_option("dirs", merge.shardDirs, "The shards' --out folders")->required();
   mergeCmd->add_option("--out", merge.outDir, "Output folder for the merged run")->required();
-  // `lightcts run compare OLD NEW [--out DIR]` (issue 16, docs/cli.md).
+  // `lightcts run compare OLD NEW [--out DIR]` (docs/cli.md).
   std::vector<std::string> runCompareFiles;
   std::string runCompareOut;
   auto* runCompareCmd = runCmd->add_subcommand(
@@ -142,7 +160,7 @@ int main(int argc, char** argv) {
   bakeCmd->add_flag("--no-cache", bake.noCache, "Bake even when the bake cache holds this bake, and do not store it");
   runner::BenchOptions bench;
   std::vector<std::string> compareFiles;
-  auto* benchCmd = cli.add_subcommand("bench", "Benchmarks: speed against error per backend, cost curves (issue 7)");
+  auto* benchCmd = cli.add_subcommand("bench", "Benchmarks: speed against error per backend, cost curves");
   benchCmd->add_option("--backend", bench.backends, "Backends or combinations, as for run (default: every one)");
   benchCmd->add_option("--out", bench.outDir, "Output folder: bench.json, index.html, <backend>.html");
   benchCmd->add_option("--scenes", bench.scenesDir, "Scene folder")->default_val("suite/scenes");
@@ -189,7 +207,7 @@ int main(int argc, char** argv) {
       }
     return app::runRunCompareCommand(runCompareFiles[0], runCompareFiles[1], runCompareOut, o, e);
   }
-  if (*runCmd && run.outDir.empty()) {
+  if (*runCmd && run.outDir.empty() && !run.listOnly) {
     e << "lightcts: run: --out is required\n";
     return app::kExitBadInput;
   }

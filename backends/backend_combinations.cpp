@@ -34,6 +34,11 @@ const BackendCombination* findCombination(std::string_view backend, std::string_
   return nullptr;
 }
 
+BackendCombination combinationWithDriver(std::string_view backend, std::string_view driver) {
+  if (const BackendCombination* known = findCombination(backend, driver)) return *known;
+  return {std::string(backend) + "-" + std::string(driver), std::string(backend), std::string(driver)};
+}
+
 std::string combinationSuffixList() {
   std::string list;
   for (const BackendCombination& c : backendCombinations()) list += (list.empty() ? "" : ", ") + c.suffix;

@@ -35,6 +35,11 @@ const BackendCombination* findCombination(std::string_view suffix);
 // or null when the backend has no such driver.
 const BackendCombination* findCombination(std::string_view backend, std::string_view driver);
 
+// `backend` with `driver`: the table's combination where it has one, else
+// one named "<backend>-<driver>" (a Mesa driver the table does not list,
+// such as zink), so two runs on different drivers never share test names.
+BackendCombination combinationWithDriver(std::string_view backend, std::string_view driver);
+
 // "vulkan, gl-egl, ..." for messages that list what is accepted.
 std::string combinationSuffixList();
 

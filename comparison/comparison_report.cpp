@@ -1,8 +1,8 @@
 #include "comparison/comparison_report.h"
 
+#include "comparison/evidence_viewer.h"
 #include "imaging/atomic_file.h"
 #include "imaging/image_files.h"
-
 
 #include <algorithm>
 #include <cmath>
@@ -185,7 +185,9 @@ void writeEvidence(const std::string& dir, const Comparison& comparison, const i
       writeDepthPng(path((stem + "-reference.png").c_str()), shadowMaps->reference[v]);
     }
   }
-  imaging::writeFileAtomically(folder / "summary.json", comparisonJson(comparison, testName).dump(2) + "\n");
+  const Json summary = comparisonJson(comparison, testName);
+  writeEvidenceViewer(folder, comparison, result, reference, summary);
+  imaging::writeFileAtomically(folder / "summary.json", summary.dump(2) + "\n");
 }
 
 }  // namespace comparison

@@ -26,7 +26,8 @@ nlohmann::ordered_json comparisonJson(const Comparison& comparison, std::string_
 
 // Creates `dir` and writes result.exr, reference.exr (RGB value, A mask),
 // tolerance.exr, result.png and reference.png (tone-mapped previews),
-// error-mask.png (the mask as 8-bit 0 / 64 / 255) and, last, summary.json
+// error-mask.png (the mask as 8-bit 0 / 64 / 255), the viewer (viewer.html
+// and viewer-data.js, evidence_viewer.h) and, last, summary.json
 // (comparisonJson): its presence means the evidence is complete. Every file is
 // written to a hidden temporary name and renamed into place. Throws
 // std::runtime_error (imaging::ImageFileError, std::filesystem::filesystem_error)

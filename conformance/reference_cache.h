@@ -1,4 +1,4 @@
-// The on-disk cache of references (issue 20, docs/cli.md): a reference and
+// The on-disk cache of references (docs/cli.md): a reference and
 // its tolerance are a function of the scene, the frame, the reference options
 // and the code that computes them, so one computed for lavapipe is the same
 // for llvmpipe, softpipe and every later run. Each is computed once, by

@@ -121,7 +121,7 @@ struct CheckOptions {
   // The backend's mutant: a CPU mutant (conformance/cpu_mutants.h) alters the
   // frame the backend draws; the reference always gets the model's frame.
   shaders::Mutant mutant = shaders::Mutant::None;
-  // The clustered benchmark mode (issue 21, lighting/light_clusters.h): the
+  // The clustered benchmark mode (lighting/light_clusters.h): the
   // backend draws each frame over its clusters' lights, against the same
   // reference and tolerance (the mode drops no light that reaches a pixel).
   // useLightClusters throws std::invalid_argument for a scene it cannot draw.

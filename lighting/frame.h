@@ -62,7 +62,7 @@ struct ShaderFeatures {
   bool specularBrdf = false;   // some object has the srp BRDF (SPEC 3.8)
   bool cookies = false;        // some kept light has a cookie (SPEC 3.10)
   bool shadowMaps = false;     // some kept light has a real-time shadow map (SPEC 3.9)
-  // Forward+ (issue 21, a benchmark mode, never the model's): each fragment
+  // Forward+ (a benchmark mode, never the model's): each fragment
   // loops over its cluster's lights (Frame::clusters) instead of every kept one.
   bool clusteredLights = false;
 };

@@ -58,7 +58,7 @@ struct GpuFrameBlock {
   // the view direction); w 1 for an orthographic camera, 0 for a perspective
   // one, whose V is normalize(-p) of the camera-relative p.
   GpuVec4 view;
-  // The clustered mode (issue 21, lighting/light_clusters.h), zero in the
+  // The clustered mode (lighting/light_clusters.h), zero in the
   // model's modes: how a fragment finds its cluster. The tile from the pixel
   // its clip position (viewProjection's, interpolated from the vertices) is
   // at (API-neutral: neither gl_FragCoord's origin nor the viewport's flip

@@ -1,4 +1,4 @@
-// Forward+ light binning (issue 21; URP's clustered forward path): the kept
+// Forward+ light binning (URP's clustered forward path): the kept
 // point and spot lights of a frame (SPEC 5.1's packed `other` lights, after
 // the 64-light selection) binned into screen tiles and view-depth slices by
 // their range spheres, so a fragment loops over its cluster's lights only.

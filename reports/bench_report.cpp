@@ -55,7 +55,7 @@ void metaRow(std::ostream& out, const std::string& key, const std::string& value
   out << "<dt>" << escapeText(key) << "</dt><dd>" << escapeText(value) << "</dd>\n";
 }
 
-// The warning of a run whose machine changed under it (issue 20): the two
+// The warning of a run whose machine changed under it: the two
 // calibrations differ by more than kPeakDriftLimit, so its times and limits
 // are not comparable with a quiet run's. Computed from the two rates, not
 // read from peak_drift, so a hand-edited or older file cannot hide it.

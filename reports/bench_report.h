@@ -1,4 +1,4 @@
-// The performance pages of `lightcts bench` (issue 7, docs/bench-report.md):
+// The performance pages of `lightcts bench` (docs/bench-report.md):
 // bench.json (docs/bench-format.md) -> DIR/index.html (every backend) and
 // DIR/<backend>.html (one per backend). Self-contained: inline SVG plots and
 // CSS, no script, no external resource.
@@ -37,7 +37,7 @@ std::string benchPageFile(const std::string& backend);
 // better in one of the two. Equal points are all on the front.
 std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points);
 
-// The peak-rate calibration run before and after the timed runs (issue 20):
+// The peak-rate calibration run before and after the timed runs:
 // the machine's load can swing it 4x, so a run whose two calibrations differ
 // was timed on a machine that changed under it. `difference` is
 // |after - before| / min(before, after), symmetric in the two and never

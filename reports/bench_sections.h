@@ -23,8 +23,8 @@ void lightmapSection(std::ostream& out, const BenchModel& m, const Entries& cand
 // CPU preparation curves with their complexity fits.
 void costCurveSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend);
 void prepareSection(std::ostream& out, const BenchModel& m);
-// bench_curve_sections.cpp too: each backend's two-term limit (issue 21,
-// two_term_limit.h) with its residual beside the flop roof.
+// bench_curve_sections.cpp too: each backend's two-term limit
+// (two_term_limit.h) with its residual beside the flop roof.
 void twoTermSection(std::ostream& out, const BenchModel& m, const Entries& candidates);
 
 }  // namespace reports::benchpages

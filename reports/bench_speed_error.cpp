@@ -89,7 +89,7 @@ Table<const BenchEntry*> paretoTable(const BenchModel& m, const std::map<const B
   // The shadow-map modes carry their shadow passes' share of the frame.
   if (withShadowPasses) table.columns.push_back(counterColumn("shadow pass ms", "shadow_pass_ms"));
   table.columns.push_back(numberColumn("\u00d7 limit", limitRatio, 3));
-  // Issue 21: over the backend's two-term estimate for the mode's load.
+  // The time over the backend's two-term estimate for the mode's load.
   table.columns.push_back(
       numberColumn("\u00d7 two-term", [&m](const BenchEntry& e) { return twoTermRatio(m, e); }, 3));
   return table;

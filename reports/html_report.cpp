@@ -23,6 +23,7 @@ figure img { width: 256px; image-rendering: pixelated; border: 1px solid #999; b
 figcaption { font-size: .9em; word-break: break-all; max-width: 256px; }
 pre { background: #f6f6f6; padding: .5em; white-space: pre-wrap; }
 img.thumb { width: 64px; image-rendering: pixelated; border: 1px solid #999; background: #000; }
+iframe.viewer { width: 100%; height: 640px; border: 1px solid #999; }
 .missing { color: #b00; font-weight: bold; }
 section.test { border-left: 4px solid #e66; padding-left: 1em; margin-bottom: 2em; }
 section.test.QualityWarning { border-color: #db3; }

@@ -63,11 +63,14 @@ std::string numberCell(std::string_view text) { return "<td class=\"n\">" + esca
 
 void header(std::ostream& out, const Page& page) {
   const Json& results = page.results;
-  long long problems = 0, warnings = 0, skipped = 0, total = 0, survived = 0;
+  long long problems = 0, warnings = 0, skipped = 0, expected = 0, total = 0, survived = 0;
   for (const Json& test : arrayField(results, "tests")) {
     const std::string verdict = textField(test, "verdict");
     ++total;
+    // An expected failure is a skip to CI (it must not block), but to a
+    // reader it is a known defect of the driver, not a test that could not run.
     if (comparison::parseVerdict(verdict) == comparison::Verdict::QualityWarning) ++warnings;
+    else if (comparison::parseVerdict(verdict) == comparison::Verdict::ExpectedFail) ++expected;
     else if (outcomeOf(verdict) == Outcome::Failure || outcomeOf(verdict) == Outcome::Error) ++problems;
     else if (outcomeOf(verdict) == Outcome::Skipped) ++skipped;
   }
@@ -84,8 +87,8 @@ void header(std::ostream& out, const Page& page) {
     out << problems << " failing test" << (problems == 1 ? "" : "s") << ", " << survived << " mutant run"
         << (survived == 1 ? "" : "s") << " not killed, " << brokenBackends << " backend"
         << (brokenBackends == 1 ? "" : "s") << " with an error";
-  out << "</strong> (" << total << " tests, " << warnings << " quality warnings, " << skipped
-      << " skipped or expected failures)</p>\n<dl class=\"meta\">\n";
+  out << "</strong> (" << total << " tests, " << warnings << " quality warnings, " << skipped << " skipped (not supported), "
+      << expected << " expected failures)</p>\n<dl class=\"meta\">\n";
   metaRow(out, "revision", textField(results, "lightcts_revision"));
   metaRow(out, "started (UTC)", textField(results, "started_utc"));
   metaRow(out, "duration", formatField(results, "duration_s") + " s");
@@ -95,6 +98,19 @@ void header(std::ostream& out, const Page& page) {
                               textField(machine, "cores") + " cores, " + textField(machine, "os"));
   metaRow(out, "scenes", textField(results, "scenes_dir"));
   metaRow(out, "timeout per test", formatField(results, "timeout_s") + " s");
+  const Json& selection = objectField(results, "selection");
+  std::string chosen;
+  for (const auto& [key, label] : {std::pair{"include", "--include"}, std::pair{"exclude", "--exclude"},
+                                   std::pair{"caselists", "--caselist"}})
+    for (const Json& item : arrayField(selection, key)) {
+      if (!chosen.empty()) chosen += ' ';
+      chosen += label;
+      chosen += ' ';
+      chosen += formatValue(item);
+    }
+  if (!chosen.empty()) metaRow(out, "selection", chosen);
+  for (const Json& file : arrayField(results, "baseline_files"))
+    metaRow(out, textField(file, "kind"), textField(file, "path") + " (SHA-256 " + textField(file, "sha256") + ")");
   out << "</dl>\n<p><a href=\"#backends\">backends</a> | <a href=\"#mutants\">mutants</a> | "
          "<a href=\"#attention\">tests that need attention</a> | <a href=\"#tests\">all tests</a> | "
          "<a href=\"#popping\">popping</a> | <a href=\"#slowest\">slowest tests</a></p>\n";
@@ -165,9 +181,15 @@ void mutantTable(std::ostream& out, const Page& page) {
   long long killed = 0;
   for (const Json& m : mutants)
     killed += comparison::parseMutantStatus(textField(m, "status")) == comparison::MutantStatus::Killed;
+  const std::string check = textField(page.results, "mutant_check");
   out << "<p>" << killed << " of " << mutants.size()
       << " mutant runs killed. A mutant is a deliberately wrong variant of the model (SPEC 7); "
-         "it is killed when at least one scene fails with it.</p>\n<table>\n<tr><th>mutant</th><th>what</th>";
+         "it is killed when at least one scene fails with it. "
+      << (check == "all-scenes" ? "This run checked each mutant against every selected scene (the whole kill table)."
+          : check == "killers"  ? "This run checked each mutant against its killers, the scenes meant to catch it "
+                                  "(suite/mutant_killers.def); --mutants-all-scenes checks every scene."
+                                : "")
+      << "</p>\n<table>\n<tr><th>mutant</th><th>what</th>";
   for (const std::string& b : backends) out << "<th>" << escapeText(b) << "</th>";
   out << "</tr>\n";
   for (const std::string& name : names) {
@@ -203,8 +225,8 @@ void mutantTable(std::ostream& out, const Page& page) {
         out << "<br><small>";
         if (!textField(evidence, "test").empty()) out << escapeText(textField(evidence, "test")) << ": ";
         bool first = true;
-        for (const auto& [key, label] : {std::pair{"result_png", "result"}, std::pair{"reference_png", "reference"},
-                                         std::pair{"error_mask_png", "error mask"}})
+        for (const auto& [key, label] : {std::pair{"viewer", "viewer"}, std::pair{"result_png", "result"},
+                                         std::pair{"reference_png", "reference"}, std::pair{"error_mask_png", "error mask"}})
           if (!textField(evidence, key).empty()) {
             out << (first ? "" : " ") << linkTo(textField(evidence, key), page, label);
             first = false;

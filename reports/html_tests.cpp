@@ -98,6 +98,18 @@ void attentionSection(std::ostream& out, const Page& page, const Json& test) {
   if (!textField(test, "message").empty()) out << "<pre>" << escapeText(textField(test, "message")) << "</pre>\n";
 
   const Json& evidence = objectField(test, "evidence");
+  // The viewer (reports/viewer/README.md): swipe, zoom and probe the float
+  // images of the failing frame, in the page itself.
+  if (const std::string viewer = textField(evidence, "viewer"); !viewer.empty()) {
+    const std::string href = escapeText(imageHref(viewer, page.runDir, page.reportDir));
+    out << "<p>Evidence viewer of frame " << escapeText(formatField(evidence, "frame")) << " (keys 1-4 switch "
+        << "result, reference, tolerance and error mask; s swipes; the pointer probes a pixel's floats): <a href=\""
+        << href << "\">open it alone</a></p>\n<iframe class=\"viewer\" src=\"" << href
+        << "\" title=\"evidence viewer of " << escapeText(name) << "\" loading=\"lazy\"></iframe>\n";
+  }
+  if (evidence.value("images_kept", true) == false)
+    out << "<p>No images: this failure came after the first --evidence-limit "
+        << escapeText(formatField(page.results, "evidence_limit")) << " with evidence; its numbers are below.</p>\n";
   bool anyImage = false;
   for (const auto& [key, label] : {std::pair{"result_png", "result"}, std::pair{"reference_png", "reference"},
                                    std::pair{"error_mask_png", "error mask"}})
@@ -109,7 +121,7 @@ void attentionSection(std::ostream& out, const Page& page, const Json& test) {
   // A CI error (Crash, Timeout) is a test that did not run to its end.
   const bool ended = outcomeOf(verdict) == Outcome::Error;
   if (anyImage) out << "</div>\n";
-  else out << "<p>No images: " << (ended ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
+  else if (evidence.value("images_kept", true) != false) out << "<p>No images: " << (ended ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
   if (!textField(evidence, "summary_json").empty())
     out << "<p>Comparison summary: <a href=\""
         << escapeText(imageHref(textField(evidence, "summary_json"), page.runDir, page.reportDir)) << "\">"

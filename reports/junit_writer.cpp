@@ -56,9 +56,26 @@ std::string triple(const Json& pixel, std::string_view key) {
   return text + ")";
 }
 
+// Where a test's evidence page is: the viewer's path in the run folder, or
+// --evidence-url's template with {test} replaced (a CI artifact's URL, as
+// deqp-runner's `junit --template`). A failure past --evidence-limit has no
+// images and no page: its numbers (summary.json) stand in. "" when none.
+std::string evidencePage(const Json& test, const std::string& urlTemplate) {
+  const Json& evidence = objectField(test, "evidence");
+  const std::string viewer = textField(evidence, "viewer");
+  if (viewer.empty()) return textField(evidence, "summary_json");
+  if (urlTemplate.empty()) return viewer;
+  std::string url = urlTemplate;
+  const std::string name = textField(test, "name");
+  for (std::size_t at = url.find("{test}"); at != std::string::npos; at = url.find("{test}", at + name.size()))
+    url.replace(at, 6, name);
+  return url;
+}
+
 // Everything a person needs from a CI page without opening the HTML report.
-std::string testDetails(const Json& test) {
+std::string testDetails(const Json& test, const std::string& page) {
   std::ostringstream out;
+  if (!page.empty()) out << "evidence: " << page << '\n';
   const Json& metrics = objectField(test, "metrics");
   if (!textField(test, "description").empty()) out << textField(test, "description") << '\n';
   out << "scene file: " << textField(test, "scene_file") << '\n';
@@ -79,8 +96,10 @@ std::string testDetails(const Json& test) {
   return out.str();
 }
 
-Case testCase(const Json& test) {
+Case testCase(const Json& test, const std::string& evidenceUrl) {
   Case c;
+  const std::string page = evidencePage(test, evidenceUrl);
+  const auto testDetails = [&](const Json& t) { return reports::testDetails(t, page); };
   const std::string verdict = textField(test, "verdict");
   const std::string group = textField(test, "group");
   c.classname = junitClassname(textField(test, "backend"), group);
@@ -115,7 +134,7 @@ Case testCase(const Json& test) {
     case Verdict::Fail:
     case Verdict::Crash:
     case Verdict::Timeout:
-      c.message = c.type + ": " + (message.empty() ? metrics : message);
+      c.message = c.type + ": " + (message.empty() ? metrics : message) + (page.empty() ? "" : " (evidence: " + page + ")");
       c.details = testDetails(test);
       break;
   }
@@ -196,6 +215,7 @@ void writeCase(std::ostringstream& out, const Case& c) {
 
 std::vector<Suite> suites(const Json& results) {
   std::vector<Suite> list;
+  const std::string evidenceUrl = textField(results, "evidence_url");
   for (const std::string& backendName : backendOrder(results)) {
     Suite suite;
     suite.name = backendName;
@@ -208,7 +228,7 @@ std::vector<Suite> suites(const Json& results) {
         suite.properties.emplace_back(key, textField(backend, key));
       suite.seconds = numberField(backend, "wall_s");
       for (const Json& test : arrayField(results, "tests"))
-        if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test));
+        if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test, evidenceUrl));
       const std::string status = textField(backend, "status");
       const bool ran = comparison::parseBackendStatus(status) == comparison::BackendStatus::Ran;
       if (suite.cases.empty() && !ran) {
@@ -224,7 +244,7 @@ std::vector<Suite> suites(const Json& results) {
     }
     if (suite.properties.empty())  // a backend that only tests name
       for (const Json& test : arrayField(results, "tests"))
-        if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test));
+        if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test, evidenceUrl));
     if (!suite.cases.empty() || !suite.properties.empty()) list.push_back(std::move(suite));
   }
   if (!arrayField(results, "mutants").empty()) {

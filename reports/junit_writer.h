@@ -21,6 +21,10 @@ namespace reports {
 //                                            failure is not a pass, and must not block)
 //   QualityWarning, Flake, Pass              pass; QualityWarning and Flake with <system-out>
 // (the classification is comparison::ciOutcome, comparison/verdict.h).
+// A test with evidence names its page (the viewer, evidence/<test>/viewer.html,
+// relative to the run folder, or results.json's "evidence_url" with {test}
+// replaced) in the first line of its details and, on a failure or error, at
+// the end of the message attribute.
 // A backend that did not run ("NotSupported" or "error") and has no tests
 // still shows, as one testcase "backend.BACKEND" of classname "BACKEND.backend"
 // (skipped or error).

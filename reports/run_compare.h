@@ -1,4 +1,4 @@
-// Comparing two runs (`lightcts run compare OLD NEW`, issue 16): what changed
+// Comparing two runs (`lightcts run compare OLD NEW`): what changed
 // from one results.json to the other, per test name, as piglit's summary
 // comparison shows it. Both files are read through result_fields.h (missing or
 // mistyped fields read as empty, never throw) and every verdict through

@@ -1,4 +1,4 @@
-// The two-term limit (issue 21): a backend's frame time modelled as a fixed
+// The two-term limit: a backend's frame time modelled as a fixed
 // cost per pixel plus a cost per pixel-light evaluation,
 //   t = a * pixels + b * pixels * lights_per_pixel,
 // fitted by least squares to its all-lights light-count curve

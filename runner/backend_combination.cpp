@@ -1,5 +1,6 @@
 #include "runner/backend_combination.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace runner {
@@ -22,6 +23,23 @@ std::vector<BackendCombination> selectCombinations(const std::vector<std::string
   for (std::size_t i = 0; i < chosen.size(); ++i)
     if (chosen[i]) selected.push_back(all[i]);
   return selected;
+}
+
+std::vector<BackendCombination> selectCombinations(const std::vector<std::string>& names, const std::string& driver) {
+  std::vector<BackendCombination> chosen = selectCombinations(names);
+  if (driver.empty()) return chosen;
+  std::vector<BackendCombination> withDriver;
+  bool anyGl = false;
+  for (const BackendCombination& c : chosen) {
+    // Vulkan has no --driver: its ICD is chosen by the loader (--device).
+    const BackendCombination one = c.driver.empty() ? c : backends::combinationWithDriver(c.backend, driver);
+    anyGl = anyGl || !c.driver.empty();
+    const bool seen = std::any_of(withDriver.begin(), withDriver.end(),
+                                  [&](const BackendCombination& w) { return w.suffix == one.suffix; });
+    if (!seen) withDriver.push_back(one);
+  }
+  if (!anyGl) throw std::invalid_argument("--driver '" + driver + "' chooses a GL driver, and no GL backend is run");
+  return withDriver;
 }
 
 }  // namespace runner

@@ -18,4 +18,10 @@ using backends::backendCombinations;
 // std::invalid_argument naming the first unknown name.
 std::vector<BackendCombination> selectCombinations(const std::vector<std::string>& names);
 
+// The same, with `run --driver NAME` (any Mesa Gallium driver, as `compare`
+// takes it): the GL combinations chosen become one per GL API backend with
+// that driver (combinationWithDriver); Vulkan's are as chosen. Throws
+// std::invalid_argument when no GL backend is chosen.
+std::vector<BackendCombination> selectCombinations(const std::vector<std::string>& names, const std::string& driver);
+
 }  // namespace runner

@@ -257,7 +257,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   const std::vector<std::string> quick = options.quick ? std::vector<std::string>{"--quick"} : std::vector<std::string>{};
 
   // The calibration first, on a quiet machine: every later limit depends on
-  // it. It runs again after the timed runs (issue 20): a machine loaded
+  // it. It runs again after the timed runs: a machine loaded
   // during the run shows as a difference between the two, which the pages flag.
   const Json peak = calibratePeak(options, rawDir, "peak", out, err);
   std::vector<std::string> common;  // what every frame process gets

@@ -1,4 +1,4 @@
-// `lightcts bench` (issue 7): the frame benchmarks of every backend
+// `lightcts bench`: the frame benchmarks of every backend
 // combination asked for, each in a process of its own (Mesa loads one driver
 // per process; a driver crash costs one combination, not the run), the CPU
 // preparation benchmarks, and the peak-rate calibration, merged into

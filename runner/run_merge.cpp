@@ -225,6 +225,7 @@ MergedMutant mergeMutant(const std::vector<std::pair<const Json*, const Shard*>>
                  {"what", first["what"]},
                  {"backend", first["backend"]},
                  {"status", comparison::mutantStatusName(status)},
+                 {"killers", first.contains("killers") ? first["killers"] : Json::array()},
                  {"killed_by", killedBy},
                  {"evidence", evidence}};
   return {std::move(record), evidenceShard};
@@ -354,7 +355,12 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
                  {"machine", first["machine"]},
                  {"scenes_dir", first["scenes_dir"]},
                  {"scenes_digest", first["scenes_digest"]},
+                 {"selection", first.contains("selection") ? first["selection"] : Json(nullptr)},
+                 {"baseline_files", first.contains("baseline_files") ? first["baseline_files"] : Json::array()},
                  {"mutants_run", first["mutants_run"]},
+                 {"mutant_check", first.value("mutant_check", "all-scenes")},
+                 {"evidence_limit", first.contains("evidence_limit") ? first["evidence_limit"] : Json(nullptr)},
+                 {"evidence_url", first.value("evidence_url", "")},
                  {"jobs", first["jobs"]},
                  {"shard", nullptr},
                  {"merged_from", mergedFrom},

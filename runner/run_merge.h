@@ -1,4 +1,4 @@
-// `lightcts merge DIR... --out DIR` (issue 20, docs/ci.md): joins the
+// `lightcts merge DIR... --out DIR` (docs/ci.md): joins the
 // folders of the N shards of one run (`lightcts run --shard I/N`) into one
 // results.json, junit.xml, results.csv, failures.csv and report, as if one
 // machine had run it: tests in the unsharded order, counts summed, the kill

@@ -1,9 +1,12 @@
 #include "runner/run_metadata.h"
 
+#include "baking/sha256.h"
 #include "runner/git_revision.h"  // generated at every build (cmake/git_revision.cmake)
 
 #include <ctime>
 #include <fstream>
+#include <sstream>
+#include <stdexcept>
 #include <thread>
 #include <unistd.h>
 
@@ -45,6 +48,15 @@ nlohmann::ordered_json machineJson() {
           {"cpu", fieldOf("/proc/cpuinfo", "model name", ':')},
           {"cores", std::thread::hardware_concurrency()},
           {"os", fieldOf("/etc/os-release", "PRETTY_NAME", '=')}};
+}
+
+nlohmann::ordered_json baselineFileJson(const std::string& kind, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument("cannot read " + path);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  const std::string data = bytes.str();
+  return {{"kind", kind}, {"path", path}, {"sha256", baking::toHex(baking::sha256(data.data(), data.size()))}};
 }
 
 }  // namespace runner

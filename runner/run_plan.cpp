@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace runner {
 namespace {
@@ -124,7 +125,17 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
       const std::size_t end = std::min(model.size(), start + kModelTestsPerPart);
       parts.push_back({c, number++, {model.begin() + std::ptrdiff_t(start), model.begin() + std::ptrdiff_t(end)}});
     }
-    for (const std::string& mutant : mutantOrder) parts.push_back({c, number++, std::move(byMutant[mutant])});
+    // Whole mutants, packed in order into parts of up to kModelTestsPerPart
+    // tasks: checked against its killers a mutant has a few tasks, and a
+    // worker per mutant would spend more on starting its backend than on them.
+    std::vector<WorkerTask> packed;
+    for (const std::string& mutant : mutantOrder) {
+      std::vector<WorkerTask>& block = byMutant[mutant];
+      if (!packed.empty() && packed.size() + block.size() > kModelTestsPerPart)
+        parts.push_back({c, number++, std::exchange(packed, {})});
+      packed.insert(packed.end(), block.begin(), block.end());
+    }
+    if (!packed.empty()) parts.push_back({c, number++, std::move(packed)});
   }
   return parts;
 }

@@ -1,4 +1,4 @@
-// How `lightcts run` divides its tests (issue 20): into shards, for CI jobs
+// How `lightcts run` divides its tests: into shards, for CI jobs
 // on many machines (`--shard I/N`), and into parts, one worker process each,
 // for the cores of one machine (`--jobs N`).
 //
@@ -64,9 +64,10 @@ std::vector<int> assignShards(const std::vector<double>& costs, int total);
 std::string partitionDigest(const std::vector<RunUnit>& units, const std::vector<int>& shardOfUnit, int total);
 
 // A worker's share of one combination: the model's tests in runs of at most
-// kModelTestsPerPart (in catalogue order), then one part per mutant (its
-// tasks over every scene, as one worker checked a mutant before parts
-// existed, so a mutant's evidence is that of its first kill).
+// kModelTestsPerPart (in catalogue order), then the mutants, each whole in
+// one part (so a mutant's evidence is that of its first kill), consecutive
+// mutants packed into parts of at most kModelTestsPerPart tasks (a mutant
+// with more tasks, checked against every scene, has a part of its own).
 inline constexpr std::size_t kModelTestsPerPart = 24;
 struct WorkerPart {
   std::size_t combination = 0;

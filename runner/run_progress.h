@@ -1,4 +1,4 @@
-// What `lightcts run` prints while it runs (issue 20): per combination, tests
+// What `lightcts run` prints while it runs: per combination, tests
 // done of total, failures so far, elapsed time and an estimate of the time
 // left. On a terminal the lines are redrawn in place (one per combination);
 // otherwise each combination prints a plain line at every tenth of its tests

@@ -2,6 +2,7 @@
 
 #include "comparison/run_status.h"
 #include "comparison/verdict.h"
+#include "conformance/mutant_killers.h"
 #include "conformance/scene_catalogue.h"
 #include "lighting/scene_loader.h"
 #include "runner/expected_failures.h"
@@ -9,7 +10,9 @@
 #include "runner/part_scheduler.h"
 #include "runner/run_metadata.h"
 #include "runner/run_progress.h"
+#include "runner/evidence_limit.h"
 #include "runner/run_results.h"
+#include "runner/test_selection.h"
 #include "runner/worker_plan.h"
 #include "shaders/shader_variant.h"
 
@@ -22,6 +25,7 @@
 #include <iomanip>
 #include <map>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -134,12 +138,26 @@ Json mutantRecord(const std::string& mutant, const std::string& suffix, BackendS
   std::string what;
   for (const shaders::MutantName& m : shaders::mutantNames())
     if (m.name == mutant) what = m.what;
+  const std::vector<std::string>* killers = conformance::killersOf(mutant);
   return {{"mutant", mutant},
           {"what", what},
           {"backend", suffix},
           {"status", comparison::mutantStatusName(status)},
+          {"killers", killers ? *killers : std::vector<std::string>{}},
           {"killed_by", killedBy},
           {"evidence", evidence}};
+}
+
+bool isKiller(const std::string& mutant, const std::string& caseName) {
+  const std::vector<std::string>* killers = conformance::killersOf(mutant);
+  return killers && std::find(killers->begin(), killers->end(), caseName) != killers->end();
+}
+
+std::string killerList(const std::string& mutant) {
+  const std::vector<std::string>* killers = conformance::killersOf(mutant);
+  std::string text;
+  for (const std::string& k : killers ? *killers : std::vector<std::string>{}) text += (text.empty() ? "" : ", ") + k;
+  return text.empty() ? "none in suite/mutant_killers.def" : text;
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -239,29 +257,64 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());  // a bad scene or baseline is bad input (exit 2)
   }
-  const std::vector<BackendCombination> combinations = selectCombinations(options.backends);
-  const std::vector<std::string> mutants = mutantsToRun(options);
+  const std::vector<BackendCombination> combinations = selectCombinations(options.backends, options.driver);
+  TestSelection selection;
+  for (const std::string& glob : options.includes) selection.include(glob);
+  for (const std::string& glob : options.excludes) selection.exclude(glob);
+  for (const std::string& file : options.caselists) selection.loadCaselist(file);
+  const std::vector<std::string> askedMutants = mutantsToRun(options);
   if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
   if (options.flakeRetries < 0) throw std::invalid_argument("--flake-retries must be 0 or more");
   if (options.jobs < 0) throw std::invalid_argument("--jobs must be 1 or more (0: one per core)");
-  if (options.mutantsOnly && mutants.empty())
+  if (options.mutantsOnly && askedMutants.empty())
     throw std::invalid_argument("nothing to run: --mutants-only with --no-mutants");
+  if (options.evidenceLimit < 0) throw std::invalid_argument("--evidence-limit must be 0 or more");
   if (!options.timingsFile.empty() && !options.shard)
     throw std::invalid_argument("--timings balances shards: it needs --shard I/N");
   const std::optional<Timings> timings =
       options.timingsFile.empty() ? std::nullopt : std::optional<Timings>(loadTimings(options.timingsFile));
   const int jobs = resolvedJobs(options.jobs);
 
-  // The run's units (one scene on one combination), and this shard's share.
+  // The selected tests (one scene on one combination), decided once before
+  // sharding: the shards of a selection partition exactly the selection.
+  std::vector<std::string> testNames;
+  for (const BackendCombination& combination : combinations)
+    for (const CatalogueEntry& scene : catalogue) testNames.push_back(scene.file.caseName() + "." + combination.suffix);
+  const std::vector<bool> selected = selection.select(testNames);
+
+  // The run's units: each selected test with its mutation-check tasks, one
+  // per mutant that this scene is to be checked against (its killers, or
+  // every scene with --mutants-all-scenes); then this shard's share.
   std::vector<RunUnit> allUnits;
-  for (std::size_t c = 0; c < combinations.size(); ++c)
+  std::set<std::pair<std::string, std::size_t>> mutantChecks;  // (mutant, combination) with a task in the run
+  for (std::size_t c = 0, t = 0; c < combinations.size(); ++c)
     for (const CatalogueEntry& scene : catalogue) {
+      if (!selected[t++]) continue;
       const std::string test = scene.file.caseName() + "." + combinations[c].suffix;
       RunUnit unit{c, test, {}};
       if (!options.mutantsOnly) unit.tasks.push_back({test, scene.file.path.string(), "none"});
-      for (const std::string& mutant : mutants) unit.tasks.push_back({test, scene.file.path.string(), mutant});
-      allUnits.push_back(std::move(unit));
+      for (const std::string& mutant : askedMutants)
+        if (options.mutantsAllScenes || isKiller(mutant, scene.file.caseName())) {
+          unit.tasks.push_back({test, scene.file.path.string(), mutant});
+          mutantChecks.emplace(mutant, c);
+        }
+      if (!unit.tasks.empty()) allUnits.push_back(std::move(unit));
     }
+  // The mutants checked: those asked for that have a scene to run (a
+  // selection may leave out every killer of some).
+  std::vector<std::string> mutants;
+  for (const std::string& mutant : askedMutants) {
+    const bool checked = std::any_of(mutantChecks.begin(), mutantChecks.end(),
+                                     [&](const auto& check) { return check.first == mutant; });
+    if (checked) mutants.push_back(mutant);
+    else if (!options.mutants.empty())
+      throw std::invalid_argument("--mutant " + mutant + ": none of its killers (" + killerList(mutant) +
+                                  ") is selected; select one, or use --mutants-all-scenes");
+  }
+  if (allUnits.empty()) throw std::invalid_argument("nothing to run: the selection holds no killer of any mutant");
+  if (mutants.size() < askedMutants.size())
+    out << "run: " << askedMutants.size() - mutants.size()
+        << " mutant(s) not checked: the selection holds none of their killers" << std::endl;
   std::vector<RunUnit> units;
   Json shardJson = nullptr;
   if (options.shard) {
@@ -282,8 +335,21 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   } else {
     units = std::move(allUnits);
   }
+  if (options.listOnly) {  // the selection as it would run: one test a line, then its mutant tasks' count
+    for (const RunUnit& unit : units) {
+      const auto mutantTasks = std::count_if(unit.tasks.begin(), unit.tasks.end(),
+                                             [](const WorkerTask& task) { return task.mutant != "none"; });
+      out << unit.test;
+      if (mutantTasks > 0) out << "  (+" << mutantTasks << " mutant task" << (mutantTasks == 1 ? "" : "s") << ")";
+      out << "\n";
+    }
+    return 0;
+  }
   std::vector<fs::path> sceneFiles;
   for (const CatalogueEntry& scene : catalogue) sceneFiles.push_back(scene.file.path);
+  Json baselines = Json::array();  // every file that decided how this run was judged or chosen
+  for (const std::string& file : options.expectedFailureFiles) baselines.push_back(baselineFileJson("expected-failures", file));
+  for (const std::string& file : options.caselists) baselines.push_back(baselineFileJson("caselist", file));
   const std::string sceneDigest = scenesDigest(sceneFiles, options.scenesDir);
 
   const fs::path outDir(options.outDir);
@@ -481,6 +547,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     std::vector<const Json*> mutantRecords;
     const std::size_t firstMutant = mutantsJson.size();
     for (const std::string& mutant : mutants) {
+      if (!mutantChecks.count({mutant, c})) continue;  // none of its scenes is selected on this combination
       Json m = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
       const MutantStatus status = *comparison::parseMutantStatus(m["status"].get<std::string>());
       // In a shard, a mutant that survives this shard's scenes may be killed
@@ -516,6 +583,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     summaries.push_back(line.str());
   }
 
+  const long long imagesDropped = limitEvidenceImages(tests, outDir, options.evidenceLimit);
   const Json slowest = slowestTests(tests);
   const Json results = {{"format", "lightcts-results"},
                         {"version", 1},
@@ -526,7 +594,12 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"machine", machineJson()},
                         {"scenes_dir", options.scenesDir},
                         {"scenes_digest", sceneDigest},
+                        {"selection", selection.toJson()},
+                        {"baseline_files", baselines},
                         {"mutants_run", mutants},
+                        {"mutant_check", options.mutantsAllScenes ? "all-scenes" : "killers"},
+                        {"evidence_limit", options.evidenceLimit},
+                        {"evidence_url", options.evidenceUrl},
                         {"jobs", jobs},
                         {"shard", shardJson},
                         {"reference_cache", privateCache ? Json("fresh") : Json(referenceCache.string())},
@@ -547,6 +620,9 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
         << "):\n";
     for (const std::string& flake : flakes) out << "  " << flake << "\n";
   }
+  if (imagesDropped > 0)
+    out << "run: " << imagesDropped << " failure(s) past --evidence-limit " << options.evidenceLimit
+        << " keep their numbers (summary.json) but no images\n";
   out << "slowest tests:\n";
   for (const Json& s : slowest) out << "  " << formatMs(s["total_ms"].get<double>()) << "  " << s["name"].get<std::string>() << "\n";
   out << "run: results in " << (outDir / "results.json").string() << ", report in "

@@ -1,4 +1,4 @@
-// `lightcts run` (SPEC 8, issues 6 and 20): every scene on every backend
+// `lightcts run` (SPEC 8): every selected scene on every backend
 // combination asked for, in worker processes (`lightcts worker`), so a driver
 // crash or hang becomes that test's Crash or Timeout and the run goes on.
 // Each combination's tests are split into parts (runner/run_plan.h), up to
@@ -25,9 +25,20 @@ struct RunOptions {
   std::string device;                 // --device for every backend
   std::string expectDriver;           // --expect-driver
   std::vector<std::string> expectedFailureFiles;
+  std::string driver;                 // --driver: the GL combinations' Mesa driver; "" for the table's
+  // The selection (runner/test_selection.h): --include, --exclude, --caselist.
+  std::vector<std::string> includes;
+  std::vector<std::string> excludes;
+  std::vector<std::string> caselists;
   std::vector<std::string> mutants;   // --mutant: these only; empty: every mutant (unless noMutants)
   bool noMutants = false;             // --no-mutants
   bool mutantsOnly = false;           // --mutants-only: the mutation check alone (ctest -L mutants)
+  // --mutants-all-scenes: every mutant against every selected scene (the
+  // whole kill table), not only against its killers (suite/mutant_killers.def).
+  bool mutantsAllScenes = false;
+  int evidenceLimit = 50;             // --evidence-limit: failures that keep their images (all keep numbers)
+  std::string evidenceUrl;            // --evidence-url: junit.xml's evidence link, "{test}" replaced
+  bool listOnly = false;              // --list: print the selected tests (this shard's) and run nothing
   double timeoutSeconds = 120;        // per test
   int flakeRetries = 1;               // --flake-retries: re-runs of a failing, crashing or timed-out test
   bool flakesFail = false;            // --flakes-fail: a Flake fails the run

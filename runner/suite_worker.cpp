@@ -106,6 +106,7 @@ Json evidenceJson(const std::string& dir, int frame) {
           {"result_png", dir + "/result.png"},
           {"reference_png", dir + "/reference.png"},
           {"error_mask_png", dir + "/error-mask.png"},
+          {"viewer", dir + "/viewer.html"},
           {"summary_json", dir + "/summary.json"}};
 }
 

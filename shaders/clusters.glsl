@@ -1,4 +1,4 @@
-// Forward+ (issue 21; lighting/light_clusters.h bins the lights on the CPU):
+// Forward+ (lighting/light_clusters.h bins the lights on the CPU):
 // a fragment finds its cluster (screen tile and view-depth slice) and loops
 // over that cluster's lights only. The lists are one R32UI texel buffer
 // (lighting::packClusterTexels): per cluster a header (first << 8) | count,
@@ -25,7 +25,7 @@ bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts.w != 0
 // `clip` is forward.vert's gl_Position, interpolated (perspective-correct, so
 // it is viewProjection * p up to rounding), not viewProjection * p here:
 // lavapipe (Mesa 22.3) took a fixed 70-180 ms a frame longer when this stage
-// read the matrix (measured, issue 21; the other drivers did not).
+// read the matrix (measured; the other drivers did not).
 int clusterOf(vec4 clip, vec3 p) {
   vec2 ndc = clip.xy / clip.w;
   vec2 pixel = vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * frameData.clusterScreen.xy;

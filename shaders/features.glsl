@@ -33,7 +33,7 @@ layout(constant_id = 11) const bool COOKIES = true;
 // Real-time shadow maps (SPEC 3.9): some kept light has one, so lights carry
 // a shadow slot and the depth textures are looked up (shadows.glsl).
 layout(constant_id = 12) const bool SHADOW_MAPS = true;
-// Forward+ (issue 21, a benchmark mode, never the model's): the fragment
+// Forward+ (a benchmark mode, never the model's): the fragment
 // loops over its cluster's lights (clusters.glsl) instead of every kept one.
 // The full shader asks FrameBlock.lightCounts.w.
 layout(constant_id = 13) const bool CLUSTERED_LIGHTS = true;

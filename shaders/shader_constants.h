@@ -24,7 +24,7 @@ enum ConstantId : std::uint32_t {
   kSpecularBrdf = 10,  // some material has the srp BRDF (SPEC 3.8)
   kCookies = 11,       // some kept light has a cookie (SPEC 3.10)
   kShadowMaps = 12,    // some kept light has a real-time shadow map (SPEC 3.9)
-  kClusteredLights = 13,  // Forward+: the fragment loops over its cluster's lights (issue 21)
+  kClusteredLights = 13,  // Forward+: the fragment loops over its cluster's lights
   kConstantCount = 14,
 };
 

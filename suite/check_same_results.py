@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Checks that two lightcts runs say the same thing, apart from timings
-(issue 20): `lightcts run --jobs 1` against `--jobs 2`, or a merge of shards
+"""Checks that two lightcts runs say the same thing, apart from timings:
+`lightcts run --jobs 1` against `--jobs 2`, or a merge of shards
 against the unsharded run. Compares results.json test for test (every field
 but the timings), the mutant records, the backends' statuses and counts,
 junit.xml's testcases, failures.csv and results.csv, and the evidence files

@@ -1,4 +1,5 @@
-# Issue 20 through the real binary and real drivers:
+# Parallel runs and shards (`lightcts run --jobs`, `--shard`, `lightcts merge`)
+# through the real binary and real drivers:
 #   MODE=jobs:   `lightcts run --jobs 1` and `--jobs 2` over the same tests (a
 #                worker crash among them) write the same results, apart from
 #                timings (suite/check_same_results.py).

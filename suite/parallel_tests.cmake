@@ -1,4 +1,4 @@
-# `lightcts run --jobs`, `--shard` and `lightcts merge` (issue 20) through the
+# `lightcts run --jobs`, `--shard` and `lightcts merge` through the
 # real binary and real drivers (suite/parallel_outcome.cmake). Included by
 # scene_tests.cmake, which defines backend_test_environment.
 find_program(PYTHON3 python3 REQUIRED)  # scripts/setup.sh installs it (python3-scipy)
@@ -24,3 +24,7 @@ endfunction()
 set(parallel_args "--backend;vulkan;--backend;gl-egl;--scenes;${parallel_scenes};--mutant;distance-clamp-1e-4;--mutant;unsquared-spot;--flake-retries;0")
 add_parallel_test(jobs-1-and-2-write-the-same jobs "${parallel_args}" "LIGHTCTS_TEST_CRASH_ON=${parallel_crash}")
 add_parallel_test(shards-merge-into-the-whole-run shards "${parallel_args}" "")
+# The shards of a selection merge into the selection: the same as one run of it.
+add_parallel_test(shards-of-a-selection-merge-into-the-selection shards
+  "--backend;vulkan;--scenes;${parallel_scenes};--include;attenuation.*;--exclude;*-range.vulkan;--mutant;distance-clamp-1e-4;--flake-retries;0"
+  "")

@@ -1,4 +1,4 @@
-# Runs `lightcts run compare OLD NEW --out OUT/page` (issue 16) and checks its
+# Runs `lightcts run compare OLD NEW --out OUT/page` and checks its
 # exit status, its printout and the page: written unless the exit is 2 (bad
 # input writes nothing).
 #   cmake -DLIGHTCTS=exe -DOLD=results.json -DNEW=results.json -DOUT=dir -DEXIT=status

@@ -1,6 +1,6 @@
 # Runs `lightcts run` and checks its exit status and, in results.json, the
 # verdicts of named tests and the status of named backends: the runner's own
-# contract (issue 6), tested through the real binary and real drivers.
+# contract, tested through the real binary and real drivers.
 #   cmake -DLIGHTCTS=exe -DOUT=dir -DEXIT=status "-DARGS=a;b" ["-DENV=K=V;K=V"]
 #         ["-DVERDICTS=test=Verdict;..."] ["-DBACKENDS=suffix=status;..."]
 #         ["-DOUTPUT_REGEX=regex"] -P run_outcome.cmake

@@ -1,4 +1,4 @@
-# `lightcts run` through the real binary (issue 6): crashes and hangs of a
+# `lightcts run` through the real binary: crashes and hangs of a
 # worker are recorded and the run completes, bad input exits 2, a missing
 # backend is NotSupported, a baseline turns verdicts, a driver that is not the
 # one asked for never passes. Included by scene_tests.cmake.
@@ -37,7 +37,7 @@ file(WRITE ${baseline} "# written by suite/run_tests.cmake\n${one_test},Crash  #
 add_run_test(expected-failures-baseline 1 "${vulkan_only};--expected-failures;${baseline}"
   "LIGHTCTS_TEST_CRASH_ON=${one_test}" "${one_test}=ExpectedFail;${neighbour}=UnexpectedPass" "" "")
 
-# deqp-runner's lists (issue 16): a run with a crash writes failures.csv,
+# deqp-runner's lists: a run with a crash writes failures.csv,
 # which loads back as the expected failures of the next run as it is (the
 # crash becomes ExpectedFail, the run passes). The junit.xml of both runs
 # (an <error>, then a <skipped>) validates against the JUnit schema Jenkins
@@ -74,7 +74,7 @@ add_test(NAME run.real-run-report-images-load-in-chromium
 set_tests_properties(run.real-run-report-images-load-in-chromium PROPERTIES LABELS "run;report;vulkan"
   FIXTURES_REQUIRED real-run SKIP_RETURN_CODE 77)
 
-# `lightcts bench --quick` end to end on Vulkan (issue 7): bench.json and the
+# `lightcts bench --quick` end to end on Vulkan: bench.json and the
 # pages are written, and every plot renders in headless Chromium
 # (reports/tests/check_svgs_render.sh; exit 77, a skip, without Chromium).
 # A smoke test of the wiring, never a measurement: speed is not asserted.
@@ -95,7 +95,7 @@ add_test(NAME bench.compare-against-itself-finds-no-regression
 set_tests_properties(bench.compare-against-itself-finds-no-regression PROPERTIES LABELS "bench"
   FIXTURES_REQUIRED bench-quick)
 
-# Flake detection (issue 16): LIGHTCTS_TEST_CRASH_ONCE crashes the worker at
+# Flake detection: LIGHTCTS_TEST_CRASH_ONCE crashes the worker at
 # one test only while its marker file is absent (the worker creates it first),
 # so the first attempt is a Crash and the retry in a fresh worker passes: the
 # test is Flake, listed apart, and the run passes; with --flakes-fail a Flake
@@ -110,7 +110,7 @@ add_flake_test(crash-once-is-flake 0 "" Flake "1 Flake.*${flake_listed}")
 add_flake_test(flakes-fail-fails-the-run 1 "--flakes-fail" Flake "${flake_listed}")
 add_flake_test(flake-retries-0-keeps-the-crash 1 "--flake-retries;0" Crash "1 Crash")
 
-# `lightcts run compare OLD NEW --out DIR` (issue 16): a real run against
+# `lightcts run compare OLD NEW --out DIR`: a real run against
 # itself is no change (exit 0); against a copy of it with one verdict edited
 # Pass -> Fail, and against a real run where that test crashed
 # (LIGHTCTS_TEST_CRASH_ON), it names the regression (exit 1); the other way

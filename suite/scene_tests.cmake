@@ -77,11 +77,12 @@ foreach(scene ${scene_files})
 endforeach()
 
 # Mutants (SPEC 7): suite/mutant_tests.cmake. `lightcts run` itself:
-# suite/run_tests.cmake. Selection checks (SPEC 5.4, written by hand):
+# suite/run_tests.cmake; choosing its tests by name: suite/test_choice_tests.cmake. Selection checks (SPEC 5.4, written by hand):
 # suite/selection_tests.cmake.
 include(${CMAKE_CURRENT_LIST_DIR}/mutant_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/run_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/parallel_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/test_choice_tests.cmake)
 if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/selection_tests.cmake)
   include(${CMAKE_CURRENT_LIST_DIR}/selection_tests.cmake)
 endif()

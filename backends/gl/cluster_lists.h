@@ -1,4 +1,4 @@
-// The clustered mode's light lists (issue 21, shaders/clusters.glsl) as an
+// The clustered mode's light lists (shaders/clusters.glsl) as an
 // OpenGL 3.3 texture buffer of GL_R32UI texels on kClusterListsUnit, the
 // forward program's `clusterLists` sampler. Every forward frame writes it:
 // the frame's lists in the clustered mode, one zero texel otherwise, so the

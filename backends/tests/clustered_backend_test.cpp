@@ -1,4 +1,4 @@
-// Issue 21's exactness: the clustered mode (lighting/light_clusters.h)
+// The clustered mode's exactness: the mode (lighting/light_clusters.h)
 // drops no light that reaches a pixel, so on every combination each suite
 // scene it can draw (srp, forward, without per-object lists) must pass the
 // same comparison as the model's all-lights loop: every frame, against the

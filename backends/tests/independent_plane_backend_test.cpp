@@ -48,7 +48,7 @@ namespace {
 
 using namespace independent_plane;
 
-// The acceptance bound of the issue: 1e-3 relative per channel.
+// The acceptance bound: 1e-3 relative per channel.
 constexpr double kRelativeTolerance = 1e-3;
 
 // The absolute floor, in float32 unit roundoffs (u = 2^-24) of the pixel's
@@ -59,10 +59,11 @@ constexpr double kRelativeTolerance = 1e-3;
 // value of the channel; a channel far smaller than that term cannot be held
 // to 1e-3 of itself below those roundings. 8 u = 4.8e-7 of the largest
 // contribution: a handful of roundings, and within the 1e-6 of it that the
-// issue allows. In these scenes every albedo and light-colour channel is at
-// least 1/4 of the largest and the ambient term is positive, so 1e-3 of the
-// expected value exceeds this floor on every pixel of the plane; the floor
-// only guards a channel whose exact value is (nearly) 0 from a 0/0 test.
+// acceptance rule allows. In these scenes every albedo and light-colour
+// channel is at least 1/4 of the largest and the ambient term is positive,
+// so 1e-3 of the expected value exceeds this floor on every pixel of the
+// plane; the floor only guards a channel whose exact value is (nearly) 0
+// from a 0/0 test.
 constexpr double kAbsoluteFloorUlps = 8;
 constexpr double kUnitRoundoff = 0x1p-24;
 

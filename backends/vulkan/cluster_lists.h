@@ -1,4 +1,4 @@
-// The clustered mode's light lists (issue 21, shaders/clusters.glsl) as a
+// The clustered mode's light lists (shaders/clusters.glsl) as a
 // uniform texel buffer of R32UI texels, alone in set 2 of the forward
 // pipeline, which the pass binds once (set 0 is bound again for every
 // object). Every forward frame writes it: the frame's lists in the clustered

@@ -1,4 +1,4 @@
-// Issue 8's acceptance check: "A baked inverse-squared point light on a plane
+// The baker's acceptance check: "A baked inverse-squared point light on a plane
 // matches an independent evaluation of SPEC 3.6 at texel centres to 1e-6
 // relative." Everything below is written out again from the SPEC text (the
 // rotation of SPEC 1, the plane UV of 3.6, the distance clamp and range term

@@ -7,7 +7,9 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -160,20 +162,83 @@ TEST(ComparisonJson, NonFiniteNumbersBecomeStrings) {
   EXPECT_EQ(parsed["worst"][1]["excess"], 0.25);
 }
 
+// RFC 4648 base64, decoded here by hand: the viewer's data must read back
+// as the very floats of the images, checked by a path other than the writer's.
+std::vector<float> decodeFloats(const std::string& base64) {
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<std::uint8_t> bytes;
+  unsigned bits = 0, held = 0;
+  for (const char c : base64) {
+    if (c == '=') break;
+    bits = (bits << 6) | unsigned(alphabet.find(c));
+    held += 6;
+    if (held >= 8) {
+      held -= 8;
+      bytes.push_back(std::uint8_t((bits >> held) & 0xff));
+    }
+  }
+  std::vector<float> values(bytes.size() / 4);
+  std::memcpy(values.data(), bytes.data(), values.size() * 4);  // little-endian, as the format says
+  return values;
+}
+
+TEST_F(EvidenceFolder, ViewerDataHoldsTheImagesFloatsTopRowFirst) {
+  Images images = onePixelOff();
+  images.result.at(3, 2, 1) = std::numeric_limits<float>::quiet_NaN();  // last pixel's green
+  images.reference.tolerance.at(1, 0, 2) = 0.1f;                          // not a binary fraction
+  const Comparison c = compareImages(images.result, images.reference, {});
+  writeEvidence(dir_.string(), c, images.result, images.reference, "a.b.c");
+
+  std::ifstream in(dir_ / "viewer-data.js");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string prefix = "window.LIGHTCTS_EVIDENCE = ";
+  ASSERT_EQ(text.str().rfind(prefix, 0), 0u) << text.str().substr(0, 40);
+  std::string body = text.str().substr(prefix.size());
+  body = body.substr(0, body.rfind(';'));
+  const nlohmann::json data = nlohmann::json::parse(body);
+  EXPECT_EQ(data["width"], 4);
+  EXPECT_EQ(data["height"], 3);
+  EXPECT_EQ(data["test"], "a.b.c");
+  EXPECT_EQ(data["summary"]["failing_pixels"], 2);  // the red 1.0 and the NaN
+
+  const std::vector<float> result = decodeFloats(data["images"]["result"]["data"]);
+  ASSERT_EQ(result.size(), 4u * 3u * 3u);
+  EXPECT_EQ(result[(1 * 4 + 2) * 3 + 0], 1.0f);  // (2, 1) red, row 1 from the top
+  EXPECT_EQ(result[(0 * 4 + 0) * 3 + 0], kValue);
+  EXPECT_TRUE(std::isnan(result[(2 * 4 + 3) * 3 + 1]));
+  const std::vector<float> tolerance = decodeFloats(data["images"]["tolerance"]["data"]);
+  EXPECT_EQ(tolerance[(0 * 4 + 1) * 3 + 2], 0.1f);
+  const std::vector<float> maskValues = decodeFloats(data["images"]["mask"]["data"]);
+  ASSERT_EQ(maskValues.size(), 12u);
+  EXPECT_EQ(maskValues[0], 0.0f);  // (0, 0) is masked
+  EXPECT_EQ(maskValues[1], 1.0f);
+  EXPECT_EQ(data["images"]["error"]["channels"], 3);
+  const std::vector<float> error = decodeFloats(data["images"]["error"]["data"]);
+  EXPECT_EQ(error[(1 * 4 + 2) * 3 + 0], 1.0f);  // failing: red
+  EXPECT_EQ(error[(1 * 4 + 2) * 3 + 1], 0.0f);
+
+  // The page is the one the build carries, whole, and loads the data beside it.
+  std::ifstream page(dir_ / "viewer.html");
+  std::stringstream html;
+  html << page.rdbuf();
+  EXPECT_NE(html.str().find("viewer-data.js"), std::string::npos);
+}
+
 TEST_F(EvidenceFolder, WritesEveryFileAndSummaryLast) {
   const Images images = onePixelOff();
   const Comparison c = compareImages(images.result, images.reference, {});
   writeEvidence(dir_.string(), c, images.result, images.reference, "a.b.c");
 
   for (const char* name : {"result.exr", "reference.exr", "tolerance.exr", "result.png", "reference.png",
-                           "error-mask.png", "summary.json"})
+                           "error-mask.png", "viewer.html", "viewer-data.js", "summary.json"})
     EXPECT_TRUE(fs::is_regular_file(dir_ / name)) << name;
   int files = 0;
   for (const auto& entry : fs::directory_iterator(dir_)) {
     ++files;
     EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
   }
-  EXPECT_EQ(files, 7);
+  EXPECT_EQ(files, 9);
 
   std::ifstream summary(dir_ / "summary.json");
   const nlohmann::json json = nlohmann::json::parse(summary);

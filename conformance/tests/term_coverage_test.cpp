@@ -1,4 +1,4 @@
-// Issue 17, point 6: every term of SPEC 3 (ambient, lightmap, each light type,
+// Every term of SPEC 3 (ambient, lightmap, each light type,
 // vertex lights), for both BRDFs, has a suite scene in which all its inputs
 // are non-trivial (albedo neither 0 nor 1 in any channel and not grey,
 // coloured non-zero ambient, coloured light colours, intensities other than

@@ -6,7 +6,7 @@
 // repeat / clamp-to-edge are written here again, component by component, with
 // no glm helpers (glm is only used for Vec3 storage and to build test points).
 //
-// The acceptance rule (the issue): 1e-9 relative in double, or 1e-12 absolute
+// The acceptance rule: 1e-9 relative in double, or 1e-12 absolute
 // where the expected value is 0; values behind a spot's apex must be exactly 0.
 // Where a point lies far from the origin (near 1e5 m) the comparison of a
 // general direction also admits the coordinate's own double-precision error

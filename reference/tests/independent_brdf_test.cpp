@@ -291,7 +291,7 @@ constexpr double kPeakStrength[] = {0.16666333338333266667, 5.331627076179302806
 // nh2 * (r2 - 1) + 1.00001 cancels down to r2 + 0.00001 = 1.1e-4 (smoothness 0.9),
 // so the ulp of 1 (2.2e-16) it carries is 2e-12 of it and 4e-12 of d2: the
 // ill-conditioning SPEC 3.8 names, here in double. 1e-10 leaves room for that;
-// the reference is held to the 1e-9 against the same numbers.
+// the reference is held to the acceptance rule's 1e-9 against the same numbers.
 constexpr double kHandTolerance = 1e-10;
 
 // Orthographic straight down, directional light straight down: V = (0, 1, 0)

@@ -1,4 +1,4 @@
-// The loaded-machine flag of issue 20: the peak-rate calibrations before and
+// The loaded-machine flag: the peak-rate calibrations before and
 // after the timed runs, compared as |after - before| / min(before, after)
 // against 0.2. The expected values are worked out by hand in each test.
 #include "reports/bench_report.h"
@@ -47,7 +47,8 @@ TEST(BenchPeakDrift, TheLimitItselfIsNotFlagged) {
 }
 
 TEST(BenchPeakDrift, TheIssuesLoadedAgainstQuietRatesAreFlagged) {
-  // Issue 20: 109 GFLOP/s under load against 426 quiet: 317 / 109 = 2.9.
+  // Rates measured on one 2-core machine: 109 GFLOP/s under load against
+  // 426 quiet: 317 / 109 = 2.9.
   const auto drift = peakDrift(426.0, 109.0);
   ASSERT_TRUE(drift.has_value());
   EXPECT_NEAR(drift->difference, 317.0 / 109.0, 1e-12);

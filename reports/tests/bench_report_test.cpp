@@ -248,7 +248,7 @@ TEST(BenchReport, SharesThePageFrameWithTheConformanceReport) {
   EXPECT_EQ(bench.find(".v-Pass"), std::string::npos);
 }
 
-// A broken mode (NaN or infinite pixels, issue 16) is never a point. The
+// A broken mode (NaN or infinite pixels) is never a point. The
 // field on vulkan, median ms and err_rmse: all-lights 10 1e-4, deferred-hdr32
 // 5 2e-4, deferred-ldr8 3 with 1200 non-finite pixels (its error counters
 // null, as bench.json writes them), deferred-hdr16 2 with 7 non-finite pixels

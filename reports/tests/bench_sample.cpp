@@ -70,7 +70,7 @@ Json sampleBench() {
                  12.08, 0.28, frameCounters(1e-4, 2e-3, 0.5, true, 12.0));
   for (int lights : {1, 4, 16, 64, 256}) {
     const double t = 0.5 + 0.1 * lights;
-    // An exact line in the pixel-lights (issue 21's two-term fit): a = 0.5 ms
+    // An exact line in the pixel-lights (the two-term fit's model): a = 0.5 ms
     // over 921600 pixels, b = 0.1 ms over 921600 pixel-lights.
     repetitionsOnly(vulkan, "frame/vulkan/curve-lights/all-lights/" + std::to_string(lights) + "/manual_time",
                     {t * 0.98, t, t * 1.03}, "ms",

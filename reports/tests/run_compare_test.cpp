@@ -1,4 +1,4 @@
-// `lightcts run compare` (issue 16): reports/run_compare.h on hand-written
+// `lightcts run compare`: reports/run_compare.h on hand-written
 // results objects.
 #include "reports/run_compare.h"
 

@@ -39,5 +39,17 @@ TEST(BackendCombination, UnknownNameIsNamedInTheError) {
   }
 }
 
+TEST(BackendCombination, DriverMakesTheGlCombinationsOnePerApiBackend) {
+  EXPECT_EQ(suffixes(selectCombinations({}, "softpipe")),
+            (std::vector<std::string>{"vulkan", "gl-egl-softpipe", "gl-osmesa-softpipe"}));
+  EXPECT_EQ(suffixes(selectCombinations({"gl-egl"}, "llvmpipe")), (std::vector<std::string>{"gl-egl"}));
+  // A driver the table does not list keeps its name in the suffix.
+  const auto zink = selectCombinations({"gl-osmesa"}, "zink");
+  ASSERT_EQ(suffixes(zink), (std::vector<std::string>{"gl-osmesa-zink"}));
+  EXPECT_EQ(zink[0].backend, "gl-osmesa");
+  EXPECT_EQ(zink[0].driver, "zink");
+  EXPECT_THROW(selectCombinations({"vulkan"}, "softpipe"), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace runner

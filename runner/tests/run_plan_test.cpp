@@ -74,13 +74,15 @@ TEST(RunPlan, TimingsComeFromAResultsFile) {
   std::filesystem::remove(file);
 }
 
-// 30 model tests split 24 + 6; each mutant is one part over every scene.
+// 30 model tests split 24 + 6; each mutant over 30 scenes (more than a part
+// holds) is a part of its own; on the second combination the two mutants of
+// one task each share a part.
 TEST(RunPlan, PartsSplitTheModelAndKeepEachMutantWhole) {
   std::vector<RunUnit> units;
   for (int s = 0; s < 30; ++s) units.push_back(unit(0, "g.s" + std::to_string(100 + s) + ".vulkan", 2));
   units.push_back(unit(1, "g.s100.gl-egl", 2));
   const std::vector<WorkerPart> parts = workerParts(units, 2);
-  ASSERT_EQ(parts.size(), 4u + 3u);
+  ASSERT_EQ(parts.size(), 4u + 2u);
   EXPECT_EQ(parts[0].tasks.size(), kModelTestsPerPart);
   EXPECT_EQ(parts[1].tasks.size(), 30 - kModelTestsPerPart);
   EXPECT_EQ(parts[2].tasks.size(), 30u);
@@ -89,7 +91,27 @@ TEST(RunPlan, PartsSplitTheModelAndKeepEachMutantWhole) {
   EXPECT_EQ(parts[3].number, 3);
   EXPECT_EQ(parts[4].combination, 1u);
   EXPECT_EQ(parts[4].number, 0);
+  ASSERT_EQ(parts[5].tasks.size(), 2u);
+  EXPECT_EQ(parts[5].tasks[0].mutant, "mutant-0");
+  EXPECT_EQ(parts[5].tasks[1].mutant, "mutant-1");
   for (const WorkerTask& t : parts[0].tasks) EXPECT_EQ(t.mutant, "none");
+}
+
+TEST(RunPlan, SmallMutantsArePackedWholeIntoParts) {
+  // 3 scenes, 20 mutants each with one task per scene (3 tasks): 8 mutants
+  // (24 tasks) fill a part, so the parts hold 8, 8 and 4 mutants.
+  std::vector<RunUnit> units;
+  for (int s = 0; s < 3; ++s) units.push_back(unit(0, "g.s" + std::to_string(s) + ".vulkan", 20));
+  const std::vector<WorkerPart> parts = workerParts(units, 1);
+  ASSERT_EQ(parts.size(), 1u + 3u);
+  EXPECT_EQ(parts[0].tasks.size(), 3u);
+  EXPECT_EQ(parts[1].tasks.size(), 24u);
+  EXPECT_EQ(parts[2].tasks.size(), 24u);
+  EXPECT_EQ(parts[3].tasks.size(), 12u);
+  // Each mutant whole in one part, in order: mutant-8 starts the second part.
+  EXPECT_EQ(parts[1].tasks.back().mutant, "mutant-7");
+  EXPECT_EQ(parts[2].tasks.front().mutant, "mutant-8");
+  EXPECT_EQ(parts[3].tasks.back().mutant, "mutant-19");
 }
 
 TEST(RunPlan, PartitionDigestNamesThePartition) {

@@ -1,5 +1,5 @@
-// A timed-out worker is killed with its whole process group (issue 16,
-// point 6): a process it started must not outlive it.
+// A timed-out worker is killed with its whole process group: a process it
+// started must not outlive it.
 #include "runner/worker_process.h"
 
 #include <gtest/gtest.h>

@@ -20,7 +20,7 @@
 
 namespace bench {
 
-// The 64-light field's size (issue 20, the bench's budgets): 1280x720, the
+// The 64-light field's size (the bench's budgets): 1280x720, the
 // size every number of docs/performance.md is of; 320x180 on a slow driver
 // (softpipe: a sixteenth of the pixels, still seconds a frame); 320x180 with --quick,
 // which proves each mode runs and measures nothing (160x90 on a slow driver). Its scene name,
@@ -64,7 +64,7 @@ FieldModes fieldModes(const RunState& run);
 void registerFieldModes(Registrar& r, const NamedFrames& frames);
 void registerFieldPipelines(Registrar& r, const NamedFrames& frames);
 
-// The dense field (issue 21; dense64-<W>x<H>, FieldSpec::rangeScale =
+// The dense field (dense64-<W>x<H>, FieldSpec::rangeScale =
 // kDenseFieldRangeScale) in all-lights, per-object and clustered: frame only,
 // each with its error against the dense field's ideal.
 std::string denseFieldSceneName(const RunState& run);

@@ -38,7 +38,7 @@ bool makeOnce(benchmark::State& st, Made& made, const Make& make) {
 
 }  // namespace
 
-// --quick proves each benchmark runs and measures nothing (issue 20): one
+// --quick proves each benchmark runs and measures nothing: one
 // iteration, one repetition, on every driver. A slow driver (softpipe,
 // seconds a frame): one iteration, 3 repetitions. Otherwise 5: with 3
 // against 3, `lightcts bench compare`'s Mann-Whitney U is never significant

@@ -26,7 +26,7 @@ enum class FrameMode {
   DeferredHdr32,
   DeferredHdr16,
   DeferredLdr8,
-  // srp forward, each pixel over its cluster's lights (issue 21, Forward+:
+  // srp forward, each pixel over its cluster's lights (Forward+:
   // lighting/light_clusters.h): the all-lights scene, binned per frame. A
   // benchmark mode, never a suite scene's.
   Clustered,
@@ -107,19 +107,19 @@ inline constexpr double kFieldShadowDepthBias = 0.05, kFieldShadowNormalBias = 0
 // The shadow modes' map resolutions (SPEC 9: 256 to 4096 with each
 // filter): `hard` at every one, the resolution axis; `bilinear` and
 // `tent3x3` at both ends and the middle, which spans the same axis in 9
-// points instead of 15 (the full bench's 10-minute budget, issue 20: a
+// points instead of 15 (the full bench's 10-minute budget: a
 // shadowed 1280x720 frame takes some 0.7 s on lavapipe and llvmpipe, so each
 // mode costs 6 draws and a compare_Yee, about 6 s).
 inline constexpr int kShadowResolutions[] = {256, 512, 1024, 2048, 4096};
 inline constexpr int kFilteredShadowResolutions[] = {256, 1024, 4096};
 
-// The dense field (issue 21): every range 5.5 times the 64-light field's
+// The dense field: every range 5.5 times the 64-light field's
 // (0.85 -> 4.675 on 1.6 x 0.9 cells), so every tile and box is touched by 23
 // lights or more (a corner tile the fewest; docs/bench-format.md derives it):
 // per-object lists (at most 8 per object, SPEC 5.2) drop most of a pixel's
 // light, the clustered mode drops none.
 inline constexpr double kDenseFieldRangeScale = 5.5;
-inline constexpr int kDenseFieldLeastObjectLights = 20;  // what the issue asks of every object
+inline constexpr int kDenseFieldLeastObjectLights = 20;  // the fewest an object's list must hold
 
 // The srp material of the field's specular modes: a highlight of a few
 // pixels under each light seen from straight above (smoothness 0.8), with a

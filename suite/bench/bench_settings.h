@@ -26,7 +26,7 @@ struct Settings {
   // combination, read from DIR when an earlier process of the run left them
   // there, else rendered and left there (`lightcts bench` passes raw/ideal).
   std::filesystem::path idealCache;
-  // --error_cache=DIR: the err_* counters kept across runs (issue 20),
+  // --error_cache=DIR: the err_* counters kept across runs,
   // under DIR/<fingerprint of the code they depend on>, each file named by
   // the ideal's key and an XXH3-128 of the read-back image, so a later run
   // whose frame is bit for bit the same reads its error instead of running
@@ -37,8 +37,8 @@ struct Settings {
   // --mutant (tests only): every backend draws this deliberately wrong
   // variant (shaders/shader_variant.h), so a test can time a broken mode.
   shaders::Mutant mutant = shaders::Mutant::None;
-  // --cluster_tile=N, --cluster_slices=N: the clustered mode's grid (issue
-  // 21) on the fields and the light curve; the tile curve varies the tile.
+  // --cluster_tile=N, --cluster_slices=N: the clustered mode's grid on
+  // the fields and the light curve; the tile curve varies the tile.
   lighting::ClusterGridSpec clusterGrid;
   // The combination backend and driver select: its suffix names every
   // benchmark, and a slow driver (softpipe) runs the scaled-down set.

@@ -1,5 +1,5 @@
 // Cookies' upload time apart from their sampling (SPEC 9, cookies on and
-// off; issue 18): prepareTextures() of a fresh prepared scene of the cookie
+// off): prepareTextures() of a fresh prepared scene of the cookie
 // field (FieldSpec::cookies: a tiled directional, two projected spot and two
 // cube cookies), at several cookie sizes. The frame modes `cookies` and
 // `cookie-lights` (field_modes.cpp) time the draws without it.

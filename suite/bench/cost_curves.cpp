@@ -29,7 +29,7 @@ std::string sizeName(int width, int height) { return std::to_string(width) + "x"
 void registerCurves(Registrar& r) {
   const RunState& run = r.run();
   const bool quick = run.settings.quick;
-  // A slow driver's full set has no curves (issue 20: softpipe's share of
+  // A slow driver's full set has no curves (softpipe's share of
   // the full bench's 10 minutes): how a reference rasterizer's time grows
   // with lights, objects and pixels tells a reader nothing about a renderer,
   // and its field modes keep its errors. Its --quick run still draws each.
@@ -48,7 +48,7 @@ void registerCurves(Registrar& r) {
   // (a few per pixel) overtake every kept light per pixel.
   // With --quick the deferred curve in hdr32 alone: the other buffers draw
   // the same volumes.
-  // The clustered mode (issue 21) beside them: the light count a pixel's
+  // The clustered mode beside them: the light count a pixel's
   // cluster holds grows with the lights' overlap, not with the count kept.
   // The all-lights points are what the reports' two-term limit is fitted to
   // (a fixed cost per pixel plus one per pixel-light, docs/performance.md).
@@ -70,7 +70,7 @@ void registerCurves(Registrar& r) {
     }
   }
 
-  // The clustered mode against its tile size (issue 21), the 64 lights of
+  // The clustered mode against its tile size, the 64 lights of
   // the field at the curves' size and the slices of --cluster_slices: small
   // tiles list fewer lights per pixel but cost more headers and binning.
   const std::vector<int> tileSizes = quick ? std::vector<int>{8, 64} : std::vector<int>{4, 8, 16, 32, 64};

@@ -1,5 +1,5 @@
 // The frames' errors against their ideal references, computed before the
-// timed runs and on every core (issue 20, the full bench's budget).
+// timed runs and on every core (the full bench's budget).
 //
 // OpenImageIO's compare_Yee (image_error.h) runs on one thread and takes
 // about 3 s at 1280x720: in a full run it was some 40% of a frame process's

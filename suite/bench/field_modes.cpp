@@ -58,8 +58,8 @@ bool isLightPathMode(const std::string& mode) {
 
 }  // namespace
 
-// A slow driver draws the field at 160x90 in its full set too (issue 20's
-// budget: at 320x180 a softpipe feature frame took 3 to 4 s, and its modes
+// A slow driver draws the field at 160x90 in its full set too (the full
+// bench's budget: at 320x180 a softpipe feature frame took 3 to 4 s, and its modes
 // were 90 of the full bench's 650 s); its error is still measured on every
 // mode, its speed is a reference rasterizer's.
 FieldSize fieldSize(const RunState& run) {
@@ -99,7 +99,7 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
                                       modeOf(FrameMode::Legacy4x4, true, modeName(FrameMode::Legacy4x4) + "-full-shader")};
   if (!slow) modes.insert(modes.begin() + 3, modeOf(FrameMode::AllLights, true, "full-shader"));
   if (quick) modes.resize(2);
-  // Forward+ (issue 21): every kept light, each pixel over its cluster's.
+  // Forward+: every kept light, each pixel over its cluster's.
   modes.insert(modes.begin() + 2, modeOf(FrameMode::Clustered, false, modeName(FrameMode::Clustered)));
   const std::string specular = kSpecularSuffix;
   modes.push_back(modeOf(FrameMode::AllLights, false, specular, true));
@@ -130,7 +130,7 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
         if (filter != ShadowFilter::Hard && std::ranges::find(kFilteredShadowResolutions, resolution) ==
                                                 std::end(kFilteredShadowResolutions))
           continue;
-        // A slow driver (softpipe's share of the budget, issue 20): one
+        // A slow driver (softpipe's share of the budget): one
         // mode, bilinear at 256 (a shadowed softpipe frame took 4 s even
         // at 320x180).
         if (slow && (resolution != 256 || filter != ShadowFilter::Bilinear)) continue;
@@ -152,7 +152,7 @@ std::string denseFieldSceneName(const RunState& run) {
   return "dense64-" + std::to_string(size.width) + "x" + std::to_string(size.height);
 }
 
-// The dense field (issue 21, kDenseFieldRangeScale): the three ways to light
+// The dense field (kDenseFieldRangeScale): the three ways to light
 // every kept light per pixel or some of them, each against the dense field's
 // own ideal: all-lights, per-object (truncated at 8 of 23 or more) and clustered.
 NamedFrames denseFieldModes(const RunState& run) {

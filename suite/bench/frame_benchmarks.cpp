@@ -1,4 +1,4 @@
-// The frame benchmarks of one backend combination (SPEC 9, issue 7): the
+// The frame benchmarks of one backend combination (SPEC 9): the
 // program's steps, each done by its own file. Names and counters:
 // docs/bench-format.md. What runs:
 //   frame/<b>/lights64-1280x720/<mode>           mode: all-lights, per-object, legacy-4+4, and each

@@ -18,8 +18,8 @@ struct FrameLoad {
   // most 256x256 samples (the reference's BVH); background pixels count 0.
   // Overdraw (a pixel shaded twice before the depth test hides it) and vertex
   // lights are not counted. Deferred (SPEC 3.7): the light volumes that shade
-  // the pixel (DeferredCoverage), not the lights of its object. Clustered
-  // (issue 21): the directional lights and the lights of the pixel's cluster.
+  // the pixel (DeferredCoverage), not the lights of its object. Clustered:
+  // the directional lights and the lights of the pixel's cluster.
   double lightsPerPixel = 0;
   int keptLights = 0;
 };

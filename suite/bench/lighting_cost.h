@@ -1,6 +1,6 @@
 // The arithmetic of the lighting model per pixel and light, and the
 // machine's measured peak rate: the two halves of the physical-limit
-// estimate (issue 7, docs/performance.md).
+// estimate (docs/performance.md).
 #pragma once
 
 namespace bench {

@@ -1,4 +1,4 @@
-// The calibrated peak-rate kernel (issue 7, docs/performance.md): the
+// The calibrated peak-rate kernel (docs/performance.md): the
 // machine's single-precision floating-point rate over every core, the
 // denominator of the physical limit.
 #pragma once

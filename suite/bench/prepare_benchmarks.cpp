@@ -5,7 +5,7 @@
 //   prepare/cpu/curve-objects/per-object/<n>   64 lights, n objects (10 .. 10000)
 //   prepare/cpu/curve-lights/shadow-mask/<n>   assignShadowMaskChannels, n mixed shadowed lights
 //   prepare/cpu/lights64-1280x720/<mode>       render_bench's synthetic scene
-//   prepare/cpu/lights64-1280x720/clustered-binning  lighting::binLights of the field's frame (issue 21),
+//   prepare/cpu/lights64-1280x720/clustered-binning  lighting::binLights of the field's frame,
 //                                              16-pixel tiles, 16 slices
 //   prepare/cpu/curve-lights/clustered-binning/<n>   the same on the field with n lights (16 .. 1024), every
 //                                              one binned (past SPEC 5.1's 64 kept: what the binning costs

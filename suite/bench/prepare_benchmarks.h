@@ -1,4 +1,4 @@
-// CPU frame preparation benchmarks (issue 7, docs/bench-format.md kind
+// CPU frame preparation benchmarks (docs/bench-format.md kind
 // `prepare`, docs/performance.md): light selection (SPEC 5.1, 5.2) and the
 // packing every backend does, per frame; the shadow-mask channel assignment
 // (SPEC 5.3, bake time) apart.

@@ -1,5 +1,5 @@
-// The synthetic scenes of the CPU preparation benchmarks (issue 7,
-// docs/performance.md): built in code, deterministic (a fixed-seed generator),
+// The synthetic scenes of the CPU preparation benchmarks
+// (docs/performance.md): built in code, deterministic (a fixed-seed generator),
 // so every run times the same work.
 #pragma once
 

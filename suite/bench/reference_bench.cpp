@@ -1,5 +1,5 @@
 // Speed of the double-precision reference (SPEC 6), with Google Benchmark:
-// every scene of suite/scenes, plus two synthetic loads that the issue names
+// every scene of suite/scenes, plus two synthetic loads
 // (512x512 over 100k triangles; 64 lights summed per pixel). Counters report
 // pixels and pixel-light evaluations per second, tolerance shading included.
 #include "baking/bake.h"

@@ -1,6 +1,6 @@
 #!/bin/sh
-# Google Benchmark's own comparison tool reads bench.json (issue 16, point 2;
-# docs/bench-format.md): two `lightcts bench --quick` runs on one backend,
+# Google Benchmark's own comparison tool reads bench.json
+# (docs/bench-format.md): two `lightcts bench --quick` runs on one backend,
 # then `compare.py benchmarks A/bench.json B/bench.json` must exit 0 and name
 # every benchmark both files time.
 #

@@ -1,4 +1,4 @@
-// The dense field of issue 21 (bench_scenes.h, kDenseFieldRangeScale): every
+// The dense field (bench_scenes.h, kDenseFieldRangeScale): every
 // object's list (SPEC 5.2, before the cut to 8) holds 20 or more lights, the
 // fewest 23: a corner tile, whose bounding sphere (radius 0.918) meets the
 // range spheres (4.675) of the 23 grid lights within 5.59 of its centre

@@ -1,0 +1,33 @@
+#include "runner/evidence_limit.h"
+
+#include "comparison/verdict.h"
+
+#include <vector>
+
+namespace runner {
+
+long long limitEvidenceImages(nlohmann::ordered_json& tests, const std::filesystem::path& outDir, int limit) {
+  namespace fs = std::filesystem;
+  std::vector<nlohmann::ordered_json*> failures, others;
+  for (auto& test : tests) {
+    if (!test.contains("evidence") || !test["evidence"].is_object()) continue;
+    const auto verdict = comparison::parseVerdict(test.value("verdict", ""));
+    (verdict && comparison::isRunFailure(*verdict) ? failures : others).push_back(&test);
+  }
+  failures.insert(failures.end(), others.begin(), others.end());
+  long long dropped = 0;
+  for (std::size_t i = std::size_t(limit); i < failures.size(); ++i) {
+    nlohmann::ordered_json& evidence = (*failures[i])["evidence"];
+    const std::string summary = evidence.value("summary_json", "");
+    const fs::path folder = (outDir / summary).parent_path();
+    std::error_code ignored;
+    if (!summary.empty() && fs::is_directory(folder))
+      for (const fs::directory_entry& entry : fs::directory_iterator(folder, ignored))
+        if (entry.path().filename() != "summary.json") fs::remove_all(entry.path(), ignored);
+    evidence = {{"frame", evidence.value("frame", 0)}, {"summary_json", summary}, {"images_kept", false}};
+    ++dropped;
+  }
+  return dropped;
+}
+
+}  // namespace runner
