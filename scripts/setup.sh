@@ -24,6 +24,9 @@ packages=(
   chromium
   # the junit test: junit.xml validates against the JUnit XML schema (xmllint --schema)
   libxml2-utils
+  # the evidence viewer's test reads the EXRs' floats exactly, independently
+  # of the viewer's own data (OpenImageIO's Python module)
+  python3-openimageio
 )
 
 missing=()

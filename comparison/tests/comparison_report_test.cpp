@@ -218,10 +218,16 @@ TEST_F(EvidenceFolder, ViewerDataHoldsTheImagesFloatsTopRowFirst) {
   EXPECT_EQ(error[(1 * 4 + 2) * 3 + 0], 1.0f);  // failing: red
   EXPECT_EQ(error[(1 * 4 + 2) * 3 + 1], 0.0f);
 
-  // The page is the one the build carries, whole, and loads the data beside it.
-  std::ifstream page(dir_ / "viewer.html");
+  // The page is the one the build carries, byte for byte the source's, and
+  // loads the data beside it.
+  std::ifstream page(dir_ / "viewer.html", std::ios::binary);
   std::stringstream html;
   html << page.rdbuf();
+  std::ifstream source(LIGHTCTS_SOURCE_DIR "/reports/viewer/evidence_viewer.html", std::ios::binary);
+  ASSERT_TRUE(source) << "reports/viewer/evidence_viewer.html";
+  std::stringstream sourceText;
+  sourceText << source.rdbuf();
+  EXPECT_EQ(html.str(), sourceText.str());
   EXPECT_NE(html.str().find("viewer-data.js"), std::string::npos);
 }
 

@@ -168,6 +168,43 @@ TEST(Junit, FlakePassesWithOutput) {
   EXPECT_NE(body.find("<system-out>Flake: failed, then passed on a retry"), std::string::npos) << body;
 }
 
+std::string caseBody(const std::string& xml, const std::string& test) {
+  const std::size_t at = xml.find("name=\"" + test + "\"");
+  return at == std::string::npos ? "" : xml.substr(at, xml.find("</testcase>", at) - at);
+}
+
+TEST(Junit, AFailureNamesItsEvidencePage) {
+  const std::string page = "evidence/attenuation.point-d-half-range.vulkan/viewer.html";
+  const std::string body = caseBody(junitXml(testing::sampleResults()), "attenuation.point-d-half-range.vulkan");
+  EXPECT_NE(body.find("<failure message=\"Fail: 37 failing of 4096 compared pixels, max error 0.25, tightness 812.5 "
+                      "(evidence: " + page + ")\""),
+            std::string::npos)
+      << body;
+  EXPECT_NE(body.find("\">evidence: " + page + "\n"), std::string::npos) << body;
+}
+
+TEST(Junit, EvidenceUrlTemplateReplacesEveryTestMark) {
+  auto results = testing::sampleResults();
+  results["evidence_url"] = "https://ci.example/{test}/artifacts/{test}.html";
+  const std::string body = caseBody(junitXml(results), "attenuation.point-d-half-range.vulkan");
+  const std::string url =
+      "https://ci.example/attenuation.point-d-half-range.vulkan/artifacts/attenuation.point-d-half-range.vulkan.html";
+  EXPECT_NE(body.find("(evidence: " + url + ")"), std::string::npos) << body;
+  EXPECT_NE(body.find("evidence: " + url + "\n"), std::string::npos) << body;
+}
+
+TEST(Junit, AFailurePastTheEvidenceLimitNamesItsNumbers) {
+  auto results = testing::sampleResults();
+  results["evidence_url"] = "https://ci.example/{test}/viewer.html";
+  results["tests"][1]["evidence"] = {{"frame", 0},
+                                     {"summary_json", "evidence/attenuation.point-d-half-range.vulkan/summary.json"},
+                                     {"images_kept", false}};
+  const std::string body = caseBody(junitXml(results), "attenuation.point-d-half-range.vulkan");
+  EXPECT_NE(body.find("(evidence: evidence/attenuation.point-d-half-range.vulkan/summary.json)"), std::string::npos)
+      << body;
+  EXPECT_EQ(body.find("ci.example"), std::string::npos) << body;
+}
+
 TEST(Junit, RejectsWhatIsNotAResultsFile) {
   EXPECT_THROW(junitXml(nlohmann::ordered_json::array()), std::invalid_argument);
   EXPECT_THROW(junitXml(nlohmann::ordered_json{{"format", "something-else"}}), std::invalid_argument);

@@ -66,6 +66,7 @@ nlohmann::ordered_json sampleResults() {
      "evidence": {"frame": 0, "result_png": "evidence/attenuation.point-d-half-range.vulkan/result.png",
                   "reference_png": "evidence/attenuation.point-d-half-range.vulkan/reference.png",
                   "error_mask_png": "evidence/attenuation.point-d-half-range.vulkan/error-mask.png",
+                  "viewer": "evidence/attenuation.point-d-half-range.vulkan/viewer.html",
                   "summary_json": "evidence/attenuation.point-d-half-range.vulkan/summary.json"}},
     {"name": "limits.popping-64.vulkan", "group": "limits", "scene": "popping-64",
      "scene_file": "suite/scenes/limits/popping-64.json", "description": "animated camera over 100 lights",

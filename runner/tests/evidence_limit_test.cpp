@@ -1,0 +1,72 @@
+#include "runner/evidence_limit.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace runner {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+class EvidenceLimit : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    out_ = fs::path(::testing::TempDir()) / "lightcts-evidence-limit";
+    fs::remove_all(out_);
+  }
+  void TearDown() override { fs::remove_all(out_); }
+
+  // A test record with an evidence folder of three files, as a worker leaves it.
+  Json record(const std::string& name, const std::string& verdict) {
+    const std::string dir = "evidence/" + name;
+    fs::create_directories(out_ / dir);
+    for (const char* file : {"result.exr", "viewer-data.js", "summary.json"}) std::ofstream(out_ / dir / file) << "x";
+    return {{"name", name},
+            {"verdict", verdict},
+            {"evidence",
+             {{"frame", 2}, {"viewer", dir + "/viewer.html"}, {"summary_json", dir + "/summary.json"}}}};
+  }
+  fs::path out_;
+};
+
+TEST_F(EvidenceLimit, RunFailuresFirstThenTheRestLoseTheirImagesButKeepTheirNumbers) {
+  // In test order: an expected failure, two failures, a pass without evidence.
+  Json tests = Json::array({record("a.expected.vulkan", "ExpectedFail"), record("b.fail.vulkan", "Fail"),
+                            record("c.crash.vulkan", "Fail"), {{"name", "d.pass.vulkan"}, {"verdict", "Pass"},
+                                                               {"evidence", nullptr}}});
+  EXPECT_EQ(limitEvidenceImages(tests, out_, 1), 2);
+  // The first run failure keeps everything.
+  EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
+  EXPECT_EQ(tests[1]["evidence"]["viewer"], "evidence/b.fail.vulkan/viewer.html");
+  // The second failure and the expected failure keep summary.json alone.
+  for (const std::string name : {"c.crash.vulkan", "a.expected.vulkan"}) {
+    EXPECT_FALSE(fs::exists(out_ / "evidence" / name / "result.exr")) << name;
+    EXPECT_FALSE(fs::exists(out_ / "evidence" / name / "viewer-data.js")) << name;
+    EXPECT_TRUE(fs::exists(out_ / "evidence" / name / "summary.json")) << name;
+  }
+  EXPECT_EQ(tests[2]["evidence"], (Json{{"frame", 2}, {"summary_json", "evidence/c.crash.vulkan/summary.json"},
+                                        {"images_kept", false}}));
+  EXPECT_EQ(tests[0]["evidence"]["images_kept"], false);
+  EXPECT_TRUE(tests[3]["evidence"].is_null());
+}
+
+TEST_F(EvidenceLimit, ALimitAboveTheFailuresKeepsEverything) {
+  Json tests = Json::array({record("b.fail.vulkan", "Fail")});
+  EXPECT_EQ(limitEvidenceImages(tests, out_, 50), 0);
+  EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
+}
+
+TEST_F(EvidenceLimit, EvidenceWithoutASummaryRemovesNothingOutsideItsFolder) {
+  Json tests = Json::array({record("b.fail.vulkan", "Fail"),
+                            {{"name", "e.odd.vulkan"}, {"verdict", "Fail"}, {"evidence", {{"frame", 0}}}}});
+  std::ofstream(out_ / "results.json") << "{}";
+  EXPECT_EQ(limitEvidenceImages(tests, out_, 0), 2);
+  EXPECT_TRUE(fs::exists(out_ / "results.json"));
+  EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/summary.json"));
+}
+
+}  // namespace
+}  // namespace runner
