@@ -146,6 +146,8 @@ int main(int argc, char** argv) {
   auto* mergeCmd = cli.add_subcommand("merge", "Merge the shards of one run into one results.json and report");
   mergeCmd->add_option("dirs", merge.shardDirs, "The shards' --out folders")->required();
   mergeCmd->add_option("--out", merge.outDir, "Output folder for the merged run")->required();
+  mergeCmd->add_option("--evidence-url", merge.evidenceUrl,
+                       "junit.xml links each failure's evidence page to this URL, {test} replaced by its name");
   // `lightcts run compare OLD NEW [--out DIR]` (docs/cli.md).
   std::vector<std::string> runCompareFiles;
   std::string runCompareOut;

@@ -360,7 +360,7 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
                  {"mutants_run", first["mutants_run"]},
                  {"mutant_check", first.value("mutant_check", "all-scenes")},
                  {"evidence_limit", first.contains("evidence_limit") ? first["evidence_limit"] : Json(nullptr)},
-                 {"evidence_url", first.value("evidence_url", "")},
+                 {"evidence_url", options.evidenceUrl.empty() ? first.value("evidence_url", "") : options.evidenceUrl},
                  {"jobs", first["jobs"]},
                  {"shard", nullptr},
                  {"merged_from", mergedFrom},

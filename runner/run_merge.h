@@ -23,6 +23,9 @@ struct MergeOptions {
   std::vector<std::string> shardDirs;
   std::string outDir;
   std::string commandLine;  // for results.json
+  // --evidence-url for the merged junit.xml; "" keeps the shards' own (the
+  // merged folder is usually another CI job's artifact than the shards').
+  std::string evidenceUrl;
 };
 
 // Why a merge was refused (exit 2): the message names the shard and the difference.
