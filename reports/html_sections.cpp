@@ -206,6 +206,12 @@ void mutantTable(std::ostream& out, const Page& page) {
         continue;
       }
       out << "<td>" << verdictBadge(textField(*found, "status"));
+      if (check == "killers" && comparison::parseMutantStatus(textField(*found, "status")) ==
+                                    comparison::MutantStatus::Survived) {  // which scenes were meant to catch it
+        std::string meant;
+        for (const Json& scene : arrayField(*found, "killers")) meant += (meant.empty() ? "" : ", ") + formatValue(scene);
+        out << "<br><small>missed by its killers: " << escapeText(meant) << "</small>";
+      }
       const Json& killedBy = arrayField(*found, "killed_by");
       std::string killers;
       for (const Json& scene : killedBy) killers += (killers.empty() ? "" : ", ") + formatValue(scene);
@@ -238,6 +244,15 @@ void mutantTable(std::ostream& out, const Page& page) {
     out << "</tr>\n";
   }
   out << "</table>\n";
+  // A mutation check left out is said on the page, not only on the console.
+  const Json& notChecked = arrayField(page.results, "mutants_not_checked");
+  if (!notChecked.empty()) {
+    out << "<p>" << notChecked.size() << " mutant" << (notChecked.size() == 1 ? " was" : "s were")
+        << " not checked in this run:</p>\n<ul>\n";
+    for (const Json& m : notChecked)
+      out << "<li>" << escapeText(textField(m, "mutant")) << ": " << escapeText(textField(m, "reason")) << "</li>\n";
+    out << "</ul>\n";
+  }
 }
 
 void slowestTests(std::ostream& out, const Page& page) {

@@ -107,7 +107,10 @@ void attentionSection(std::ostream& out, const Page& page, const Json& test) {
         << href << "\">open it alone</a></p>\n<iframe class=\"viewer\" src=\"" << href
         << "\" title=\"evidence viewer of " << escapeText(name) << "\" loading=\"lazy\"></iframe>\n";
   }
-  if (evidence.value("images_kept", true) == false)
+  // results.json is read without trusting it: only a boolean false means it.
+  const bool imagesDropped = evidence.contains("images_kept") && evidence["images_kept"].is_boolean() &&
+                             !evidence["images_kept"].get<bool>();
+  if (imagesDropped)
     out << "<p>No images: this failure came after the first --evidence-limit "
         << escapeText(formatField(page.results, "evidence_limit")) << " with evidence; its numbers are below.</p>\n";
   bool anyImage = false;
@@ -121,7 +124,7 @@ void attentionSection(std::ostream& out, const Page& page, const Json& test) {
   // A CI error (Crash, Timeout) is a test that did not run to its end.
   const bool ended = outcomeOf(verdict) == Outcome::Error;
   if (anyImage) out << "</div>\n";
-  else if (evidence.value("images_kept", true) != false) out << "<p>No images: " << (ended ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
+  else if (!imagesDropped) out << "<p>No images: " << (ended ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
   if (!textField(evidence, "summary_json").empty())
     out << "<p>Comparison summary: <a href=\""
         << escapeText(imageHref(textField(evidence, "summary_json"), page.runDir, page.reportDir)) << "\">"

@@ -141,7 +141,7 @@ Case testCase(const Json& test, const std::string& evidenceUrl) {
   return c;
 }
 
-Case mutantCase(const Json& mutant) {
+Case mutantCase(const Json& mutant, const std::string& check) {
   Case c;
   const std::string status = textField(mutant, "status");
   const std::string name = textField(mutant, "mutant");
@@ -166,7 +166,13 @@ Case mutantCase(const Json& mutant) {
       c.message = status + ": the mutant's run did not finish; it proves nothing (" + what + ")";
       break;
     case MutantStatus::Survived:
-      c.message = "survived: no scene caught this wrong variant of the model (" + what + ")";
+      if (check == "killers") {
+        std::string meant;
+        for (const Json& scene : arrayField(mutant, "killers")) meant += (meant.empty() ? "" : ", ") + formatValue(scene);
+        c.message = "survived: its killers (" + meant + ") did not catch this wrong variant of the model (" + what + ")";
+      } else {
+        c.message = "survived: no scene caught this wrong variant of the model (" + what + ")";
+      }
       break;
   }
   return c;
@@ -250,7 +256,8 @@ std::vector<Suite> suites(const Json& results) {
   if (!arrayField(results, "mutants").empty()) {
     Suite mutants;
     mutants.name = "mutants";
-    for (const Json& mutant : arrayField(results, "mutants")) mutants.cases.push_back(mutantCase(mutant));
+    for (const Json& mutant : arrayField(results, "mutants"))
+      mutants.cases.push_back(mutantCase(mutant, textField(results, "mutant_check")));
     list.push_back(std::move(mutants));
   }
   return list;

@@ -28,6 +28,13 @@ std::vector<BackendCombination> selectCombinations(const std::vector<std::string
 std::vector<BackendCombination> selectCombinations(const std::vector<std::string>& names, const std::string& driver) {
   std::vector<BackendCombination> chosen = selectCombinations(names);
   if (driver.empty()) return chosen;
+  // A combination named with its driver (gl-egl-softpipe) and another --driver
+  // would each say which driver runs: the run refuses rather than pick one.
+  for (const std::string& name : names)
+    if (const BackendCombination* named = backends::findCombination(name);
+        named && named->backend != name && named->driver != driver)
+      throw std::invalid_argument("--backend " + name + " runs " + named->driver + ", and --driver asks for " + driver +
+                                  ": name the API backend (" + named->backend + ") with --driver");
   std::vector<BackendCombination> withDriver;
   bool anyGl = false;
   for (const BackendCombination& c : chosen) {

@@ -21,7 +21,8 @@ std::vector<BackendCombination> selectCombinations(const std::vector<std::string
 // The same, with `run --driver NAME` (any Mesa Gallium driver, as `compare`
 // takes it): the GL combinations chosen become one per GL API backend with
 // that driver (combinationWithDriver); Vulkan's are as chosen. Throws
-// std::invalid_argument when no GL backend is chosen.
+// std::invalid_argument when no GL backend is chosen, or when a combination
+// named with its own driver (gl-egl-softpipe) is given another.
 std::vector<BackendCombination> selectCombinations(const std::vector<std::string>& names, const std::string& driver);
 
 }  // namespace runner

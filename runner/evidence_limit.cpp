@@ -19,11 +19,15 @@ long long limitEvidenceImages(nlohmann::ordered_json& tests, const std::filesyst
   for (std::size_t i = std::size_t(limit); i < failures.size(); ++i) {
     nlohmann::ordered_json& evidence = (*failures[i])["evidence"];
     const std::string summary = evidence.value("summary_json", "");
-    const fs::path folder = (outDir / summary).parent_path();
+    const fs::path folder = (outDir / summary).lexically_normal().parent_path();
+    // Only ever a test's own folder, evidence/<test>/, whatever the record says.
+    const bool ownFolder = !summary.empty() && folder.parent_path() == (outDir / "evidence").lexically_normal();
     std::error_code ignored;
-    if (!summary.empty() && fs::is_directory(folder))
+    std::vector<fs::path> images;  // listed first: no removal while the folder is being read
+    if (ownFolder && fs::is_directory(folder))
       for (const fs::directory_entry& entry : fs::directory_iterator(folder, ignored))
-        if (entry.path().filename() != "summary.json") fs::remove_all(entry.path(), ignored);
+        if (entry.path().filename() != "summary.json") images.push_back(entry.path());
+    for (const fs::path& image : images) fs::remove_all(image, ignored);
     evidence = {{"frame", evidence.value("frame", 0)}, {"summary_json", summary}, {"images_kept", false}};
     ++dropped;
   }

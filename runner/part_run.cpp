@@ -116,6 +116,19 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         outcome.device = event["device"];
         backendUp = true;
         if (callbacks.backendUp) callbacks.backendUp();
+      } else if (kind == "backend_error" && next < plan.tasks.size() && plan.tasks[next].mutant != "none") {
+        // A mutant's backend that could not be built (its shaders, its
+        // pipelines; the model's ran in the combination's first part): the
+        // combination is in error and that mutant's tasks crashed; a fresh
+        // worker takes the next mutant packed into this part, whose verdicts
+        // stay its own.
+        outcome.status = BackendStatus::Error;
+        outcome.message = event.value("message", "");
+        const std::string failed = plan.tasks[next].mutant;
+        for (; next < plan.tasks.size() && plan.tasks[next].mutant == failed; ++next)
+          record(plan.tasks[next], abnormalResult(plan.tasks[next], Verdict::Crash,
+                                                  "mutant " + failed + ": backend error: " + outcome.message));
+        break;
       } else if (kind == "backend_unavailable" || kind == "backend_error") {
         // A backend that ran before and is gone now is an error, not a skip.
         const bool skip = kind == "backend_unavailable" && outcome.device.is_null();

@@ -3,6 +3,7 @@
 #include "comparison/run_status.h"
 #include "comparison/verdict.h"
 #include "runner/backend_combination.h"
+#include "runner/evidence_limit.h"
 #include "runner/run_metadata.h"
 #include "runner/run_results.h"
 
@@ -108,13 +109,29 @@ std::size_t combinationIndex(const std::string& suffix) {
   return all.size();
 }
 
-// The order of an unsharded run: combinations in table order, then scenes
-// by group and name (conformance::findSceneFiles).
-auto testOrder(const Json& t) {
-  return std::tuple(combinationIndex(t.value("backend", "")), t.value("group", ""), t.value("scene", ""));
+// The combinations of the run, in the unsharded run's order: the table's
+// (runner/backend_combination.h), then those the table does not list (a
+// `--driver` such as zink, which takes the place of the table's GL
+// combinations) in the order the shards name them.
+std::vector<std::string> combinationOrder(const std::vector<Shard>& shards) {
+  std::vector<std::string> suffixes;
+  for (const Shard& s : shards)
+    for (const Json& b : s.results["backends"]) {
+      const std::string suffix = b.value("backend", "");
+      if (std::find(suffixes.begin(), suffixes.end(), suffix) == suffixes.end()) suffixes.push_back(suffix);
+    }
+  std::stable_sort(suffixes.begin(), suffixes.end(),
+                   [](const std::string& a, const std::string& b) { return combinationIndex(a) < combinationIndex(b); });
+  return suffixes;
 }
 
-Json mergeTests(const std::vector<Shard>& shards) {
+Json mergeTests(const std::vector<Shard>& shards, const std::vector<std::string>& suffixes) {
+  // The order of an unsharded run: combinations as above, then scenes by
+  // group and name (conformance::findSceneFiles).
+  const auto testOrder = [&](const Json& t) {
+    const auto at = std::find(suffixes.begin(), suffixes.end(), t.value("backend", ""));
+    return std::tuple(std::size_t(at - suffixes.begin()), t.value("group", ""), t.value("scene", ""));
+  };
   std::vector<Json> tests;
   std::map<std::string, std::string> shardOfTest;
   for (const Shard& s : shards)
@@ -128,7 +145,7 @@ Json mergeTests(const std::vector<Shard>& shards) {
   if (tests.size() != expected)
     throw MergeRefused("the shards hold " + std::to_string(tests.size()) + " tests where the run has " +
                        std::to_string(expected));
-  std::stable_sort(tests.begin(), tests.end(), [](const Json& a, const Json& b) { return testOrder(a) < testOrder(b); });
+  std::stable_sort(tests.begin(), tests.end(), [&](const Json& a, const Json& b) { return testOrder(a) < testOrder(b); });
   Json merged = Json::array();
   for (Json& t : tests) merged.push_back(std::move(t));
   return merged;
@@ -293,7 +310,14 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
               [](const Json& r) { return r["shard"]["partition"]; });
   requireSameDrivers(shards);
   requireEveryShardOnce(shards);
-  const Json tests = mergeTests(shards);
+  // What chose and judged the tests must be the same in every shard (the
+  // partition digest covers the tests, not the baselines that judge them).
+  requireSame(shards, "baseline files (expected failures, caselists)",
+              [](const Json& r) { return r.value("baseline_files", Json::array()); });
+  requireSame(shards, "selections", [](const Json& r) { return r.value("selection", Json()); });
+  requireSame(shards, "mutation checks (killers or all scenes)", [](const Json& r) { return r.value("mutant_check", Json()); });
+  const std::vector<std::string> suffixes = combinationOrder(shards);  // in the unsharded run's order
+  Json tests = mergeTests(shards, suffixes);
 
   // The unsharded order of scenes, for killed_by and the first kill.
   std::map<std::string, std::size_t> sceneOrder;
@@ -303,14 +327,6 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
     for (const auto& [group, scene] : scenes) sceneOrder.emplace(group + "." + scene, sceneOrder.size());
   }
   const Json& first = shards.front().results;
-  std::vector<std::string> suffixes;  // in table order
-  for (const BackendCombination& c : backendCombinations())
-    for (const Shard& s : shards)
-      if (std::any_of(s.results["backends"].begin(), s.results["backends"].end(),
-                      [&](const Json& b) { return b.value("backend", "") == c.suffix; })) {
-        suffixes.push_back(c.suffix);
-        break;
-      }
   const std::vector<std::string> mutantOrder = first.value("mutants_run", std::vector<std::string>{});
 
   Json backends = Json::array();
@@ -359,6 +375,7 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
                  {"baseline_files", first.contains("baseline_files") ? first["baseline_files"] : Json::array()},
                  {"mutants_run", first["mutants_run"]},
                  {"mutant_check", first.value("mutant_check", "all-scenes")},
+                 {"mutants_not_checked", first.contains("mutants_not_checked") ? first["mutants_not_checked"] : Json::array()},
                  {"evidence_limit", first.contains("evidence_limit") ? first["evidence_limit"] : Json(nullptr)},
                  {"evidence_url", options.evidenceUrl.empty() ? first.value("evidence_url", "") : options.evidenceUrl},
                  {"jobs", first["jobs"]},
@@ -382,6 +399,10 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
     const std::string name = m.record["mutant"].get<std::string>() + "." + m.record["backend"].get<std::string>();
     copyFolder(m.evidenceShard->dir / "mutants" / name, outDir / "mutants" / name);
   }
+  // Each shard kept the images of at most --evidence-limit failures; the
+  // merged run keeps at most that many in all, the first in its order.
+  if (merged["evidence_limit"].is_number_integer())
+    limitEvidenceImages(merged["tests"], outDir, merged["evidence_limit"].get<int>());
   mergeLogs(shards, outDir / "logs");
   writeRunOutputs(merged, outDir);
 

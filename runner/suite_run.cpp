@@ -269,6 +269,8 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.mutantsOnly && askedMutants.empty())
     throw std::invalid_argument("nothing to run: --mutants-only with --no-mutants");
   if (options.evidenceLimit < 0) throw std::invalid_argument("--evidence-limit must be 0 or more");
+  if (options.mutantsAllScenes && options.noMutants)
+    throw std::invalid_argument("--mutants-all-scenes checks mutants, and --no-mutants skips them: choose one");
   if (!options.timingsFile.empty() && !options.shard)
     throw std::invalid_argument("--timings balances shards: it needs --shard I/N");
   const std::optional<Timings> timings =
@@ -303,18 +305,26 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // The mutants checked: those asked for that have a scene to run (a
   // selection may leave out every killer of some).
   std::vector<std::string> mutants;
+  Json mutantsNotChecked = Json::array();  // results.json: a check left out is said, never silent
   for (const std::string& mutant : askedMutants) {
     const bool checked = std::any_of(mutantChecks.begin(), mutantChecks.end(),
                                      [&](const auto& check) { return check.first == mutant; });
-    if (checked) mutants.push_back(mutant);
-    else if (!options.mutants.empty())
-      throw std::invalid_argument("--mutant " + mutant + ": none of its killers (" + killerList(mutant) +
-                                  ") is selected; select one, or use --mutants-all-scenes");
+    if (checked) {
+      mutants.push_back(mutant);
+      continue;
+    }
+    const std::string why = "none of its killers (" + killerList(mutant) + ") is among the selected scenes of " +
+                            options.scenesDir;
+    if (!options.mutants.empty())
+      throw std::invalid_argument("--mutant " + mutant + ": " + why + "; select one, or use --mutants-all-scenes");
+    mutantsNotChecked.push_back({{"mutant", mutant}, {"reason", why}});
   }
   if (allUnits.empty()) throw std::invalid_argument("nothing to run: the selection holds no killer of any mutant");
-  if (mutants.size() < askedMutants.size())
-    out << "run: " << askedMutants.size() - mutants.size()
-        << " mutant(s) not checked: the selection holds none of their killers" << std::endl;
+  // --list keeps stdout for test names alone, so that it reads back as a caselist.
+  std::ostream& notes = options.listOnly ? err : out;
+  if (!mutantsNotChecked.empty())
+    notes << "run: " << mutantsNotChecked.size() << " mutant(s) not checked: the selected scenes hold none of their "
+          << "killers (results.json: mutants_not_checked)" << std::endl;
   std::vector<RunUnit> units;
   Json shardJson = nullptr;
   if (options.shard) {
@@ -335,16 +345,22 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   } else {
     units = std::move(allUnits);
   }
-  if (options.listOnly) {  // the selection as it would run: one test a line, then its mutant tasks' count
+  if (options.listOnly) {  // the selection as it would run: one test a line (a caselist), the count apart
+    std::size_t mutantTasks = 0;
     for (const RunUnit& unit : units) {
-      const auto mutantTasks = std::count_if(unit.tasks.begin(), unit.tasks.end(),
-                                             [](const WorkerTask& task) { return task.mutant != "none"; });
-      out << unit.test;
-      if (mutantTasks > 0) out << "  (+" << mutantTasks << " mutant task" << (mutantTasks == 1 ? "" : "s") << ")";
-      out << "\n";
+      out << unit.test << "\n";
+      mutantTasks += std::size_t(std::count_if(unit.tasks.begin(), unit.tasks.end(),
+                                               [](const WorkerTask& task) { return task.mutant != "none"; }));
     }
+    err << "run: " << units.size() << " test(s), " << mutantTasks << " mutation-check task(s)" << std::endl;
     return 0;
   }
+  // The mutants this shard checks on each combination: a shard writes no
+  // record of a mutant none of whose tasks it holds (merge joins the others').
+  std::set<std::pair<std::string, std::size_t>> shardMutantChecks;
+  for (const RunUnit& unit : units)
+    for (const WorkerTask& task : unit.tasks)
+      if (task.mutant != "none") shardMutantChecks.emplace(task.mutant, unit.combination);
   std::vector<fs::path> sceneFiles;
   for (const CatalogueEntry& scene : catalogue) sceneFiles.push_back(scene.file.path);
   Json baselines = Json::array();  // every file that decided how this run was judged or chosen
@@ -547,7 +563,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     std::vector<const Json*> mutantRecords;
     const std::size_t firstMutant = mutantsJson.size();
     for (const std::string& mutant : mutants) {
-      if (!mutantChecks.count({mutant, c})) continue;  // none of its scenes is selected on this combination
+      if (!shardMutantChecks.count({mutant, c})) continue;  // none of its scenes is here on this combination
       Json m = mutantRecord(mutant, combination.suffix, outcome.status, mutantResults[mutant], cleanVerdicts);
       const MutantStatus status = *comparison::parseMutantStatus(m["status"].get<std::string>());
       // In a shard, a mutant that survives this shard's scenes may be killed
@@ -598,6 +614,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"baseline_files", baselines},
                         {"mutants_run", mutants},
                         {"mutant_check", options.mutantsAllScenes ? "all-scenes" : "killers"},
+                        {"mutants_not_checked", mutantsNotChecked},
                         {"evidence_limit", options.evidenceLimit},
                         {"evidence_url", options.evidenceUrl},
                         {"jobs", jobs},
@@ -627,6 +644,11 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   for (const Json& s : slowest) out << "  " << formatMs(s["total_ms"].get<double>()) << "  " << s["name"].get<std::string>() << "\n";
   out << "run: results in " << (outDir / "results.json").string() << ", report in "
       << (outDir / "report" / "index.html").string() << std::endl;
+  if (options.shard && units.empty()) {  // a small selection cut into many shards
+    out << "run: shard " << options.shard->index << "/" << options.shard->total
+        << " holds no test of this selection" << std::endl;
+    return 0;
+  }
   if (!anyRan) {
     err << "lightcts: run: no backend asked for is present here (NotSupported)\n";
     return 3;

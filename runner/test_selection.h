@@ -4,9 +4,9 @@
 // before sharding and before any worker starts, so `--shard I/N` partitions
 // the selected tests and the shards of a selection merge into the selection.
 //
-// A test is selected when it matches a line of every --caselist given (their
-// lines together: one list), and an --include glob when any is given, and no
-// --exclude glob. An --include glob or a caselist line that matches none of
+// A test is selected when it matches a line of the caselists (all of them
+// together: one list) when any is given, and an --include glob when any is
+// given, and no --exclude glob. An --include glob or a caselist line that matches none of
 // the run's tests is a mistake (a typo, a test that was renamed): bad input,
 // named with its file and line.
 #pragma once

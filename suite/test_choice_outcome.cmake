@@ -15,10 +15,6 @@ string(REGEX REPLACE "\n$" "" out "${out}")
 string(REPLACE "\n" ";" lines "${out}")
 set(listed)
 foreach(line ${lines})
-  if(line MATCHES "^run: ")  # a note, not a test
-    continue()
-  endif()
-  string(REGEX REPLACE "  \\(\\+[0-9]+ mutant tasks?\\)$" "" line "${line}")
   list(APPEND listed "${line}")
 endforeach()
 

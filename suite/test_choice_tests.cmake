@@ -23,6 +23,13 @@ add_choice_test(caselist-does-the-same shadows "vulkan;gl-egl;gl-osmesa" "--case
 add_choice_test(driver-names-the-gl-combinations limits "gl-egl-softpipe;gl-osmesa-softpipe"
   "--backend;gl-egl;--backend;gl-osmesa;--driver;softpipe;--include;limits.*")
 
+# --list is a caselist, and the shards of a selection partition it.
+add_test(NAME run.choice-list-is-a-caselist-and-shards-partition-it
+         COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DSCENES=${choice_scenes}
+                 -DOUT=${choice_out}/lists "-DARGS=--include;shadows.*;--include;limits.*;--exclude;*osmesa*"
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/test_choice_lists.cmake)
+set_tests_properties(run.choice-list-is-a-caselist-and-shards-partition-it PROPERTIES LABELS "run;choice")
+
 # A glob or a caselist line that matches nothing is bad input (exit 2),
 # named with its file and line; nothing is written.
 set(typo_caselist ${choice_out}/typo-caselist.txt)
@@ -30,7 +37,11 @@ file(WRITE ${typo_caselist} "# one good line, then a typo\nshadows.*.vulkan\nsha
 foreach(case "include-matching-nothing-exits-2|--include;shadow.*|--include: 'shadow\\.\\*' matches no test"
               "caselist-line-matching-nothing-exits-2|--caselist;${typo_caselist}|typo-caselist.txt:3: 'shadow.acne-no-bias.vulkan' matches no test"
               "selection-leaving-nothing-exits-2|--include;shadows.*;--exclude;shadows.*|leaves no test"
-              "unreadable-caselist-exits-2|--caselist;/nonexistent/caselist.txt|cannot read /nonexistent/caselist.txt")
+              "unreadable-caselist-exits-2|--caselist;/nonexistent/caselist.txt|cannot read /nonexistent/caselist.txt"
+              "mutant-without-a-selected-killer-exits-2|--include;limits.*;--mutant;shadow-fade-ignored|--mutant shadow-fade-ignored: none of its killers \\(shadows.fade-across-shadow-distance\\)"
+              "mutants-only-without-a-killer-exits-2|--include;limits.*;--mutants-only|the selection holds no killer"
+              "driver-against-a-named-driver-exits-2|--backend;gl-egl-softpipe;--driver;llvmpipe|--backend gl-egl-softpipe runs softpipe"
+              "all-scenes-without-mutants-exits-2|--mutants-all-scenes;--no-mutants|choose one")
   string(REPLACE "|" ";" parts "${case}")
   list(GET parts 0 name)
   list(GET parts -1 regex)

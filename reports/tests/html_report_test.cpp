@@ -80,6 +80,39 @@ TEST(HtmlReport, ImagesAreRelativeToTheReportFolder) {
   EXPECT_NE(html.find("libOSMesa.so.8 not found <a href=\"../logs/gl-osmesa.log\">log</a>"), std::string::npos);
 }
 
+TEST(HtmlReport, HeaderCountsSkipsAndExpectedFailuresApart) {
+  // The sample has one ExpectedFail (gl-egl-softpipe) and no NotSupported test.
+  const std::string html = sampleHtml();
+  EXPECT_NE(html.find("(10 tests, 1 quality warnings, 0 skipped (not supported), 1 expected failures)"),
+            std::string::npos);
+  EXPECT_EQ(html.find("skipped or expected failures"), std::string::npos);
+}
+
+TEST(HtmlReport, SaysHowTheRunWasChosenAndCheckedAndShowsTheViewer) {
+  auto results = testing::sampleResults();
+  results["selection"] = {{"include", {"attenuation.*"}}, {"exclude", {"*softpipe*"}}, {"caselists", {"vendor.txt"}}};
+  results["baseline_files"] = {{{"kind", "caselist"}, {"path", "vendor.txt"}, {"sha256", "0123abcd"}}};
+  results["mutant_check"] = "killers";
+  results["mutants_not_checked"] = {{{"mutant", "shadow-fade-ignored"}, {"reason", "none of its killers is selected"}}};
+  results["mutants"][2]["killers"] = {"attenuation.point-5mm-above-floor"};  // distance-clamp-1e-4 on vulkan
+  results["mutants"][2]["status"] = "survived";
+  results["tests"][1]["evidence"]["images_kept"] = false;
+  results["evidence_limit"] = 50;
+  const std::string html = htmlReport(results, "/runs/r1", "/runs/r1/report");
+  EXPECT_NE(html.find("--include attenuation.* --exclude *softpipe* --caselist vendor.txt"), std::string::npos);
+  EXPECT_NE(html.find("vendor.txt (SHA-256 0123abcd)"), std::string::npos);
+  EXPECT_NE(html.find("This run checked each mutant against its killers"), std::string::npos);
+  EXPECT_NE(html.find("missed by its killers: attenuation.point-5mm-above-floor"), std::string::npos);
+  EXPECT_NE(html.find("<li>shadow-fade-ignored: none of its killers is selected</li>"), std::string::npos);
+  EXPECT_NE(html.find("<iframe class=\"viewer\" src=\"../evidence/attenuation.point-d-half-range.vulkan/viewer.html\""),
+            std::string::npos);
+  EXPECT_NE(html.find("No images: this failure came after the first --evidence-limit 50"), std::string::npos);
+
+  results["mutant_check"] = "all-scenes";
+  EXPECT_NE(htmlReport(results, "/runs/r1", "/runs/r1/report").find("against every selected scene (the whole kill table)"),
+            std::string::npos);
+}
+
 TEST(HtmlReport, IsSelfContained) {
   const std::string html = sampleHtml();
   EXPECT_EQ(html.find("<script"), std::string::npos);

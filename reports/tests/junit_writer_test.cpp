@@ -205,6 +205,17 @@ TEST(Junit, AFailurePastTheEvidenceLimitNamesItsNumbers) {
   EXPECT_EQ(body.find("ci.example"), std::string::npos) << body;
 }
 
+TEST(Junit, ASurvivorOfItsKillersNamesThem) {
+  auto results = testing::sampleResults();
+  results["mutant_check"] = "killers";
+  results["mutants"][2]["killers"] = {"attenuation.point-5mm-above-floor", "attenuation.point-d-zero"};
+  const std::string body = caseBody(junitXml(results), "mutants.distance-clamp-1e-4.vulkan");
+  EXPECT_NE(body.find("<failure message=\"survived: its killers (attenuation.point-5mm-above-floor, "
+                      "attenuation.point-d-zero) did not catch"),
+            std::string::npos)
+      << body;
+}
+
 TEST(Junit, RejectsWhatIsNotAResultsFile) {
   EXPECT_THROW(junitXml(nlohmann::ordered_json::array()), std::invalid_argument);
   EXPECT_THROW(junitXml(nlohmann::ordered_json{{"format", "something-else"}}), std::invalid_argument);

@@ -906,7 +906,7 @@ def check_folder(browser, folder, checks, sources, rng):
         state = page.state()
         checks.check(state['layer'] == 'result', '%s: opens on the result layer' % label, state['layer'])
         for key, layer in (('2', 'reference'), ('3', 'tolerance'), ('4', 'error'), ('1', 'result'),
-                           ('Space', 'reference'), ('Tab', 'result')):
+                           ('Space', 'reference'), ('Space', 'result')):
             page.key(key)
             state = page.state()
             shown = page.evaluate('document.getElementById("layer-name").textContent')

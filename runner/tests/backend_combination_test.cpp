@@ -49,6 +49,10 @@ TEST(BackendCombination, DriverMakesTheGlCombinationsOnePerApiBackend) {
   EXPECT_EQ(zink[0].backend, "gl-osmesa");
   EXPECT_EQ(zink[0].driver, "zink");
   EXPECT_THROW(selectCombinations({"vulkan"}, "softpipe"), std::invalid_argument);
+  // A combination that names its own driver may not be given another.
+  EXPECT_THROW(selectCombinations({"gl-egl-softpipe"}, "llvmpipe"), std::invalid_argument);
+  EXPECT_EQ(suffixes(selectCombinations({"gl-egl-softpipe"}, "softpipe")),
+            (std::vector<std::string>{"gl-egl-softpipe"}));
 }
 
 }  // namespace

@@ -59,6 +59,15 @@ TEST_F(EvidenceLimit, ALimitAboveTheFailuresKeepsEverything) {
   EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
 }
 
+TEST_F(EvidenceLimit, ASummaryPathOutsideTheEvidenceFolderRemovesNothing) {
+  Json tests = Json::array({record("b.fail.vulkan", "Fail")});
+  tests[0]["evidence"]["summary_json"] = "evidence/../summary.json";  // would name the run folder itself
+  std::ofstream(out_ / "results.json") << "{}";
+  EXPECT_EQ(limitEvidenceImages(tests, out_, 0), 1);
+  EXPECT_TRUE(fs::exists(out_ / "results.json"));
+  EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
+}
+
 TEST_F(EvidenceLimit, EvidenceWithoutASummaryRemovesNothingOutsideItsFolder) {
   Json tests = Json::array({record("b.fail.vulkan", "Fail"),
                             {{"name", "e.odd.vulkan"}, {"verdict", "Fail"}, {"evidence", {{"frame", 0}}}}});
