@@ -156,6 +156,10 @@ class Worker {
       options.validation = backends::validationRequestedByDefault();
       const auto variant = shaders::mutantFromName(mutant);
       if (!variant) throw std::invalid_argument("unknown mutant '" + mutant + "'");
+      // Test hook: this mutant's backend fails to build, as a driver that
+      // cannot compile one shader variant would (runner/part_run.cpp).
+      if (const char* broken = std::getenv("LIGHTCTS_TEST_BACKEND_ERROR_FOR_MUTANT"); broken && mutant == broken)
+        throw std::runtime_error("test hook: mutant " + mutant + "'s backend does not build");
       options.variant.mutant = *variant;
       backend_ = entry->create(options);
       const backends::DeviceInfo device = backend_->device();

@@ -69,6 +69,14 @@ set_tests_properties(run.junit-of-real-runs-validates-against-schema PROPERTIES 
 add_run_test(real-run-report 0 "--backend;vulkan;--scenes;${run_scenes};--mutant;distance-clamp-1e-4" "" ""
   "vulkan=ran" "mutants: 1 killed, 0 survived")
 set_tests_properties(run.real-run-report PROPERTIES FIXTURES_SETUP real-run)
+# Two mutants packed into one worker part; the first one's backend does not
+# build (LIGHTCTS_TEST_BACKEND_ERROR_FOR_MUTANT): the combination is in error
+# and that mutant crashed, but the second is still checked, and killed, in a
+# fresh worker (runner/part_run.cpp).
+add_run_test(broken-mutant-backend-costs-only-its-tasks 1
+  "--backend;vulkan;--scenes;${run_scenes};--mutant;distance-clamp-1e-4;--mutant;unsquared-spot"
+  "LIGHTCTS_TEST_BACKEND_ERROR_FOR_MUTANT=distance-clamp-1e-4" "${one_test}=Pass" "vulkan=error"
+  "mutants: 1 killed, 0 survived")
 add_test(NAME run.real-run-report-images-load-in-chromium
          COMMAND ${PROJECT_SOURCE_DIR}/reports/tests/check_images_load.sh ${run_out}/real-run-report)
 set_tests_properties(run.real-run-report-images-load-in-chromium PROPERTIES LABELS "run;report;vulkan"
