@@ -134,10 +134,13 @@ Case testCase(const Json& test, const std::string& evidenceUrl) {
     case Verdict::Fail:
     case Verdict::Crash:
     case Verdict::Timeout:
-      c.message = c.type + ": " + (message.empty() ? metrics : message) + (page.empty() ? "" : " (evidence: " + page + ")");
+      c.message = c.type + ": " + (message.empty() ? metrics : message);
       c.details = testDetails(test);
       break;
   }
+  // Every failing testcase names its evidence page where CI pages show it first.
+  if ((c.outcome == Outcome::Failure || c.outcome == Outcome::Error) && !page.empty())
+    c.message += " (evidence: " + page + ")";
   return c;
 }
 

@@ -23,8 +23,8 @@ namespace reports {
 // (the classification is comparison::ciOutcome, comparison/verdict.h).
 // A test with evidence names its page (the viewer, evidence/<test>/viewer.html,
 // relative to the run folder, or results.json's "evidence_url" with {test}
-// replaced) in the first line of its details and, on a failure or error, at
-// the end of the message attribute.
+// replaced) in the first line of its details and, on a failure or error
+// (UnexpectedPass included), at the end of the message attribute.
 // A backend that did not run ("NotSupported" or "error") and has no tests
 // still shows, as one testcase "backend.BACKEND" of classname "BACKEND.backend"
 // (skipped or error).

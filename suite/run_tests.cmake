@@ -63,6 +63,25 @@ add_test(NAME run.junit-of-real-runs-validates-against-schema
 set_tests_properties(run.junit-of-real-runs-validates-against-schema PROPERTIES LABELS "run;report;vulkan"
   FIXTURES_REQUIRED "run-csv-seed;run-csv-baseline" SKIP_RETURN_CODE 77)
 
+# A real failure with evidence in junit.xml: the expect_fail scene whose
+# mismatch is detected (so it leaves evidence) listed as a known Fail, so it
+# passes unexpectedly, a failure; its testcase names its viewer through
+# --evidence-url, and the file still validates against the schema.
+set(evidence_baseline ${run_out}/evidence-baseline.txt)
+file(WRITE ${evidence_baseline}
+  "baked.legacy-falloff-vs-realtime.vulkan,Fail  # listed so that it passes unexpectedly (suite/run_tests.cmake)\n")
+add_run_test(junit-names-the-evidence-page 1
+  "--backend;vulkan;--scenes;${CMAKE_CURRENT_SOURCE_DIR}/scenes/baked;--include;baked.legacy-falloff-vs-realtime.*;--no-mutants;--expected-failures;${evidence_baseline};--evidence-url;https://ci.example/run/evidence/{test}/viewer.html"
+  "" "baked.legacy-falloff-vs-realtime.vulkan=UnexpectedPass" "vulkan=ran" "")
+set_tests_properties(run.junit-names-the-evidence-page PROPERTIES FIXTURES_SETUP run-evidence-junit)
+add_test(NAME run.junit-with-evidence-validates-and-names-the-page
+         COMMAND ${CMAKE_COMMAND} -DJUNIT=${run_out}/junit-names-the-evidence-page/junit.xml
+                 -DCHECK=${PROJECT_SOURCE_DIR}/reports/tests/check_junit_schema.sh
+                 "-DPAGE=https://ci.example/run/evidence/baked.legacy-falloff-vs-realtime.vulkan/viewer.html"
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/junit_names_evidence.cmake)
+set_tests_properties(run.junit-with-evidence-validates-and-names-the-page PROPERTIES LABELS "run;report;vulkan"
+  FIXTURES_REQUIRED run-evidence-junit SKIP_RETURN_CODE 77)
+
 # A real run whose report has images (the killing scene of a mutant), opened
 # in headless Chromium: every <img> must load (reports/tests/check_images_load.sh;
 # exit 77, a skip, when Chromium is not installed).
