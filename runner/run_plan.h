@@ -3,9 +3,10 @@
 // for the cores of one machine (`--jobs N`).
 //
 // The unit of both is one scene on one backend combination: the model's test
-// of that scene and the scene's mutation-check tasks (one per mutant) go
-// together, so a shard checks every mutant against its own scenes and the
-// kill table merges (runner/run_merge.h). The parts depend on the plan alone,
+// of that scene and the scene's mutation-check tasks (one per mutant the
+// scene is to catch: those it is a killer of, or every mutant with
+// --mutants-all-scenes) go together, so a shard checks the mutants of its own
+// scenes and the kill table merges (runner/run_merge.h). The parts depend on the plan alone,
 // never on --jobs, so a run writes the same files whatever --jobs is.
 #pragma once
 
@@ -20,7 +21,8 @@
 namespace runner {
 
 // One scene on one combination; `tasks` in worker order: the model's test
-// (unless --mutants-only), then one task per mutant in mutantNames() order.
+// (unless --mutants-only), then one task per mutant it checks, in the run's
+// mutant order.
 struct RunUnit {
   std::size_t combination = 0;  // index into the run's combinations
   std::string test;             // <group>.<name>.<suffix>
