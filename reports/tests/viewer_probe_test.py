@@ -860,7 +860,14 @@ def crisp_blocks(page, checks, label, x, y, width, height):
     z = float(page.state()['zoom'])
     left, top = sx - 1.5 * z, sy - 1.5 * z
     shot_x, shot_y = int(math.floor(left)), int(math.floor(top))
-    w, h, rows = page.screenshot(shot_x, shot_y, int(math.ceil(3 * z)) + 2, int(math.ceil(3 * z)) + 2)
+    # The layer's name sits over the view's top-left corner, where a pixel at
+    # the image's corner lands when the view cannot pan further: hidden for
+    # the shot, since it is a label, not the image.
+    page.evaluate('document.getElementById("layer-badge").style.visibility = "hidden"')
+    try:
+        w, h, rows = page.screenshot(shot_x, shot_y, int(math.ceil(3 * z)) + 2, int(math.ceil(3 * z)) + 2)
+    finally:
+        page.evaluate('document.getElementById("layer-badge").style.visibility = ""')
     colours, mixed = [], []
     inset = 4   # grid line, probe outline (2 px and its antialiasing): all near the block's edge
     for j in range(3):
