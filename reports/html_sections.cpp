@@ -208,13 +208,10 @@ void mutantTable(std::ostream& out, const Page& page) {
       out << "<td>" << verdictBadge(textField(*found, "status"));
       if (check == "killers" && comparison::parseMutantStatus(textField(*found, "status")) ==
                                     comparison::MutantStatus::Survived) {  // which scenes were meant to catch it
-        std::string meant;
-        for (const Json& scene : arrayField(*found, "killers")) meant += (meant.empty() ? "" : ", ") + formatValue(scene);
-        out << "<br><small>missed by its killers: " << escapeText(meant) << "</small>";
+        out << "<br><small>missed by its killers: " << escapeText(joinedField(*found, "killers")) << "</small>";
       }
       const Json& killedBy = arrayField(*found, "killed_by");
-      std::string killers;
-      for (const Json& scene : killedBy) killers += (killers.empty() ? "" : ", ") + formatValue(scene);
+      const std::string killers = joinedField(*found, "killed_by");
       if (killedBy.size() > 3)  // a long list folds away (plain HTML, no script)
         out << "<details><summary><small>by " << killedBy.size() << " scenes</small></summary><small>"
             << escapeText(killers) << "</small></details>";

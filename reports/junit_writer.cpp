@@ -151,8 +151,7 @@ Case mutantCase(const Json& mutant, const std::string& check) {
   c.classname = junitClassname(textField(mutant, "backend"), "mutants");
   c.name = "mutants." + name + "." + textField(mutant, "backend");
   c.type = status.empty() ? "unknown" : status;
-  std::string killers;
-  for (const Json& scene : arrayField(mutant, "killed_by")) killers += (killers.empty() ? "" : ", ") + formatValue(scene);
+  const std::string killers = joinedField(mutant, "killed_by");
   const std::string what = textField(mutant, "what");
   c.outcome = mutantOutcome(status);
   using comparison::MutantStatus;
@@ -170,9 +169,7 @@ Case mutantCase(const Json& mutant, const std::string& check) {
       break;
     case MutantStatus::Survived:
       if (check == "killers") {
-        std::string meant;
-        for (const Json& scene : arrayField(mutant, "killers")) meant += (meant.empty() ? "" : ", ") + formatValue(scene);
-        c.message = "survived: its killers (" + meant + ") did not catch this wrong variant of the model (" + what + ")";
+        c.message = "survived: its killers (" + joinedField(mutant, "killers") + ") did not catch this wrong variant of the model (" + what + ")";
       } else {
         c.message = "survived: no scene caught this wrong variant of the model (" + what + ")";
       }

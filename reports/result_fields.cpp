@@ -53,6 +53,15 @@ std::optional<double> numberField(const Json& object, std::string_view key) {
   return it->get<double>();
 }
 
+std::string joinedField(const Json& object, std::string_view key) {
+  std::string text;
+  for (const Json& item : arrayField(object, key)) {
+    if (!text.empty()) text += ", ";
+    text += formatValue(item);
+  }
+  return text;
+}
+
 std::string formatValue(const Json& value, int digits) {
   if (value.is_string()) return value.get<std::string>();
   if (value.is_number_integer()) return value.dump();

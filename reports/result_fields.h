@@ -34,6 +34,8 @@ std::optional<double> numberField(const Json& object, std::string_view key);
 // (results write "nan" and "inf" that way), null or missing as "-".
 std::string formatValue(const Json& value, int digits = 4);
 std::string formatField(const Json& object, std::string_view key, int digits = 4);
+// The array field `key` (scene names: killers, killed_by) as "a, b, c"; "" when absent.
+std::string joinedField(const Json& object, std::string_view key);
 // A measured error (max_abs_error, rmse, tightness): null there means the
 // value was not finite (results.json has no NaN or infinity), "non-finite".
 std::string formatMetric(const Json& metrics, std::string_view key, int digits = 4);

@@ -148,6 +148,12 @@ Json mutantRecord(const std::string& mutant, const std::string& suffix, BackendS
           {"evidence", evidence}};
 }
 
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
 bool isKiller(const std::string& mutant, const std::string& caseName) {
   const std::vector<std::string>* killers = conformance::killersOf(mutant);
   return killers && std::find(killers->begin(), killers->end(), caseName) != killers->end();
@@ -155,15 +161,7 @@ bool isKiller(const std::string& mutant, const std::string& caseName) {
 
 std::string killerList(const std::string& mutant) {
   const std::vector<std::string>* killers = conformance::killersOf(mutant);
-  std::string text;
-  for (const std::string& k : killers ? *killers : std::vector<std::string>{}) text += (text.empty() ? "" : ", ") + k;
-  return text.empty() ? "none in suite/mutant_killers.def" : text;
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
+  return killers && !killers->empty() ? joined(*killers) : "none in suite/mutant_killers.def";
 }
 
 std::string formatMs(double ms) {
@@ -288,7 +286,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // per mutant that this scene is to be checked against (its killers, or
   // every scene with --mutants-all-scenes); then this shard's share.
   std::vector<RunUnit> allUnits;
-  std::set<std::pair<std::string, std::size_t>> mutantChecks;  // (mutant, combination) with a task in the run
+  std::set<std::string> checkedMutants;  // those with a task in the run
   for (std::size_t c = 0, t = 0; c < combinations.size(); ++c)
     for (const CatalogueEntry& scene : catalogue) {
       if (!selected[t++]) continue;
@@ -298,7 +296,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
       for (const std::string& mutant : askedMutants)
         if (options.mutantsAllScenes || isKiller(mutant, scene.file.caseName())) {
           unit.tasks.push_back({test, scene.file.path.string(), mutant});
-          mutantChecks.emplace(mutant, c);
+          checkedMutants.insert(mutant);
         }
       if (!unit.tasks.empty()) allUnits.push_back(std::move(unit));
     }
@@ -307,9 +305,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   std::vector<std::string> mutants;
   Json mutantsNotChecked = Json::array();  // results.json: a check left out is said, never silent
   for (const std::string& mutant : askedMutants) {
-    const bool checked = std::any_of(mutantChecks.begin(), mutantChecks.end(),
-                                     [&](const auto& check) { return check.first == mutant; });
-    if (checked) {
+    if (checkedMutants.count(mutant)) {
       mutants.push_back(mutant);
       continue;
     }
