@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <iostream>
 #include <ostream>
 
 namespace app {
@@ -15,6 +16,9 @@ namespace app {
 SceneInput loadSceneInput(const SceneArguments& args, bool bake) {
   SceneInput input;
   lighting::Scene scene = lighting::loadSceneFile(args.scenePath);
+  // What an import ignored (SPEC 2.1) is said once, on stderr: stdout may
+  // be a command's JSON.
+  for (const std::string& warning : scene.warnings) std::cerr << "lightcts: warning: " << warning << "\n";
   const int count = scene.frames.count;
   if (args.frame < 0 || args.frame >= count)
     throw InputError(args.scenePath + ": --frame " + std::to_string(args.frame) + " is out of range: the scene has " +

@@ -4,6 +4,7 @@
 #include "baking/sha256.h"
 #include "conformance/reference_fingerprint.h"  // generated (CMakeLists.txt)
 #include "imaging/atomic_file.h"
+#include "lighting/mesh.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -134,6 +135,23 @@ std::string sceneContentDigest(const fs::path& sceneFile, const lighting::Scene&
   const std::vector<std::uint8_t> file = readWholeFile(sceneFile);
   w.u64(file.size());
   w.raw(file.data(), file.size());
+  // Imported meshes (SPEC 2.1) come from files beside the scene: their
+  // triangles, as imported, are part of what the reference reads.
+  for (const lighting::Object& object : scene.objects) {
+    if (object.mesh.type != lighting::MeshType::Imported) continue;
+    const lighting::Mesh& mesh = *object.mesh.imported;
+    const auto vec3 = [&w](const lighting::Vec3& v) {
+      w.f64(v.x);
+      w.f64(v.y);
+      w.f64(v.z);
+    };
+    w.u64(mesh.positions.size());
+    for (const lighting::Vec3& p : mesh.positions) vec3(p);
+    for (const lighting::Vec3& n : mesh.normals) vec3(n);
+    w.u64(mesh.triangles.size());
+    for (const auto& t : mesh.triangles) vec3(lighting::Vec3(t));
+    for (std::uint32_t piece : mesh.trianglePiece) w.u64(piece);
+  }
   for (const lighting::Light& light : scene.lights) {
     if (!light.cookie) continue;
     for (const auto& image : light.cookie->images) {

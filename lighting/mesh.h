@@ -17,13 +17,18 @@ struct Mesh {
   std::vector<Vec3> normals;          // local space, unit length
   std::vector<glm::u32vec3> triangles;
   // Which smooth piece of the surface a triangle belongs to: 0 for planes and
-  // spheres, the face (0..5) for boxes. Shading is continuous inside a piece;
-  // the reference masks pixels near a change of piece.
-  std::vector<std::uint8_t> trianglePiece;
+  // spheres, the face (0..5) for boxes, smoothPieces() for imported meshes.
+  // Shading is continuous inside a piece; the reference masks pixels near a
+  // change of piece.
+  std::vector<std::uint32_t> trianglePiece;
   Vec3 boundsMin{0, 0, 0};
   Vec3 boundsMax{0, 0, 0};
 };
 
+// The generated meshes hold float32 values (positions and normals rounded
+// once, here): every backend draws float32 vertices, so the reference traces
+// exactly the triangles they draw, and a mesh written to a glTF file (float32
+// by the format) and imported again is the same mesh, bit for bit.
 Mesh buildMesh(const MeshSpec& spec);
 
 }  // namespace lighting

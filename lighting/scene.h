@@ -31,7 +31,12 @@ struct Camera {
   double farPlane = 100;
 };
 
-enum class MeshType { Plane, Sphere, Box };
+struct Mesh;  // mesh.h
+
+// Plane, sphere and box are generated from their parameters (SPEC 2);
+// Imported holds triangles read from a glTF file (SPEC 2.1), already in world
+// space (the object's transform stays the identity).
+enum class MeshType { Plane, Sphere, Box, Imported };
 
 struct MeshSpec {
   MeshType type = MeshType::Plane;
@@ -40,6 +45,7 @@ struct MeshSpec {
   double sphereRadius = 0.5;
   int sphereSegments = 32, sphereRings = 16;
   Vec3 boxSize{1, 1, 1};
+  std::shared_ptr<const Mesh> imported;  // Imported only: world-space triangles
 };
 
 struct Transform {
@@ -170,6 +176,9 @@ struct Scene {
   std::vector<Light> lights;
   Frames frames;
   Expectation expect;
+  // What the loader accepted but ignored, each naming the file and where
+  // (glTF content outside the model, SPEC 2.1); the command line prints them.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace lighting

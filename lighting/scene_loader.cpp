@@ -5,10 +5,14 @@
 
 #include "imaging/image_files.h"
 
+#include "lighting/gltf_import.h"
+#include "lighting/json_describe.h"
 #include "lighting/json_locations.h"
+#include "lighting/transform.h"
 #include "lighting/visible_lights.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -22,6 +26,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <span>
 #include <sstream>
@@ -85,19 +90,7 @@ std::string joinKeys(Keys keys) {
 
 bool contains(Keys keys, std::string_view key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); }
 
-std::string describeType(const Json& value) {
-  switch (value.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::boolean: return "a boolean";
-    case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned:
-    case Json::value_t::number_float: return "a number";
-    case Json::value_t::string: return "a string";
-    case Json::value_t::array: return "an array";
-    case Json::value_t::object: return "an object";
-    default: return "an unsupported value";
-  }
-}
+std::string describeType(const Json& value) { return describeJsonType(value); }
 
 // "an array of 2 values" says more than "an array" when the length is what is wrong.
 std::string describeArrayOrType(const Json& value) {
@@ -151,9 +144,15 @@ std::string_view choiceName(const std::array<Choice<T>, N>& choices, T value) {
 }
 
 // The keys each object may hold, in the order SPEC 2's example lists them.
-constexpr std::array<std::string_view, 11> kSceneKeys{"lightcts", "name",    "description", "image",
-                                                      "camera",   "pipeline", "ambient",    "objects",
-                                                      "lights",   "frames",   "expect"};
+constexpr std::array<std::string_view, 12> kSceneKeys{"lightcts", "name",   "description", "image",
+                                                      "camera",   "pipeline", "ambient",   "objects",
+                                                      "lights",   "frames",   "expect",    "imports"};
+// SPEC 2.1: an import of a glTF file, and what its lights take from the scene.
+constexpr std::array<std::string_view, 6> kImportKeys{"gltf",      "scene",  "transform",
+                                                      "materials", "lights", "light_defaults"};
+constexpr std::array<std::string_view, 7> kLightDefaultsKeys{"range",      "mode",         "shadows", "shadow_strength",
+                                                             "shadow_map", "bake_falloff", "cookie"};
+constexpr std::array<std::string_view, 1> kGltfCameraKeys{"gltf_camera"};
 constexpr std::array<std::string_view, 2> kImageKeys{"width", "height"};
 constexpr std::array<std::string_view, 8> kCameraKeys{"position",  "target", "up",   "projection",
                                                       "fov_y_deg", "height", "near", "far"};
@@ -258,12 +257,21 @@ class SceneReader {
     if (auto name = member(root, "name")) scene.name = readString(*name);
     if (auto description = member(root, "description")) scene.description = readString(*description);
     scene.image = readImage(*member(root, "image"));
-    scene.camera = readCamera(*member(root, "camera"));
     if (auto pipeline = member(root, "pipeline")) scene.pipeline = readPipeline(*pipeline);
+    // SPEC 2.1: imports are read before the camera, which may be one of theirs.
+    std::vector<Import> imports;
+    if (auto list = member(root, "imports")) imports = readImports(*list, scene.pipeline.profile);
+    scene.camera = readCamera(*member(root, "camera"), imports);
     if (auto ambient = member(root, "ambient")) scene.ambient = readVec3(*ambient, atLeast(0));
     scene.objects = readArray(*member(root, "objects"), &SceneReader::readObject);
     if (scene.pipeline.profile == Profile::Legacy) rejectSrpMaterials(*member(root, "objects"), scene.objects);
     scene.lights = readArray(*member(root, "lights"), &SceneReader::readLight);
+    // Imported objects and lights follow the file's own (SPEC 2.1).
+    for (Import& import : imports) {
+      for (Object& object : import.objects) scene.objects.push_back(std::move(object));
+      for (Light& light : import.lights) scene.lights.push_back(std::move(light));
+      for (std::string& warning : import.content.warnings) scene.warnings.push_back(std::move(warning));
+    }
     if (auto frames = member(root, "frames")) scene.frames = readFrames(*frames, scene.camera);
     if (auto expect = member(root, "expect")) scene.expect = readExpectation(*expect);
     return scene;
@@ -425,8 +433,252 @@ class SceneReader {
     return image;
   }
 
-  Camera readCamera(const Node& node) const {
+  // --- imports (SPEC 2.1) ---------------------------------------------------
+
+  struct Import {
+    GltfImportRequest request;
+    GltfContent content;
+    std::vector<Object> objects;
+    std::vector<Light> lights;
+  };
+
+  std::vector<Import> readImports(const Node& node, Profile profile) const {
+    if (!node.value.is_array()) fail(node, "expected an array of imports, got " + describeType(node.value));
+    std::vector<Import> imports;
+    for (std::size_t i = 0; i < node.value.size(); ++i)
+      imports.push_back(readImport({node.value[i], node.pointer + "/" + std::to_string(i)}, profile));
+    return imports;
+  }
+
+  Import readImport(const Node& node, Profile profile) const {
     expectObject(node);
+    checkKeys(node, kImportKeys);
+    requireMember(node, "gltf");
+    Import import;
+    import.request.file = (std::filesystem::path(file_).parent_path() / readString(*member(node, "gltf"))).string();
+    if (auto scene = member(node, "scene")) import.request.scene = readInt(*scene, 0, kMaxExactInteger);
+    if (auto transform = member(node, "transform")) import.request.transform = importMatrix(readTransform(*transform));
+    // The material every imported object gets instead of the file's, when given.
+    std::optional<Object> material;
+    if (auto materials = member(node, "materials")) {
+      if (!materials->value.is_string()) {
+        material.emplace();
+        readMaterial(*materials, *material);
+        if (profile == Profile::Legacy && material->brdf == Brdf::Srp)
+          fail(*member(*materials, "brdf"), "brdf 'srp' is not available in the legacy profile (SPEC 2)");
+      } else if (materials->value.get<std::string>() != "gltf") {
+        fail(*materials, "expected \"gltf\" or a material object, got '" + materials->value.get<std::string>() + "'");
+      }
+    }
+    bool takeLights = true;
+    if (auto lights = member(node, "lights")) takeLights = readBool(*lights);
+    const auto defaults = member(node, "light_defaults");
+    if (defaults) {
+      expectObject(*defaults);
+      checkKeys(*defaults, kLightDefaultsKeys);
+    }
+    import.content = importFile(import.request, node);
+    for (const ImportedPrimitive& primitive : import.content.primitives)
+      import.objects.push_back(importedObject(primitive, material, profile));
+    if (takeLights)
+      for (const ImportedLight& light : import.content.lights)
+        import.lights.push_back(
+            importedLight(light, defaults, import.request.file, "imported by " + file_ + " at " + node.pointer));
+    return import;
+  }
+
+  // SPEC 1's transform as a matrix: translate, then R, then uniform scale.
+  static glm::dmat4 importMatrix(const Transform& t) {
+    const ObjectTransform o = objectTransform(t);
+    glm::dmat4 m(glm::dmat3(o.rotation) * o.scale);
+    m[3] = glm::dvec4(o.translate, 1.0);
+    return m;
+  }
+
+  // The import itself; a fault of the glTF file is reported against that
+  // file and its JSON path, with the import that brought it in.
+  GltfContent importFile(const GltfImportRequest& request, const Node& importNode) const {
+    try {
+      return importGltf(request);
+    } catch (const GltfError& error) {
+      throwGltfError(error, "imported by " + file_ + " at " + importNode.pointer);
+    }
+  }
+
+  static Object importedObject(const ImportedPrimitive& primitive, const std::optional<Object>& material,
+                               Profile profile) {
+    Object object = material.value_or(Object{});
+    object.name = primitive.name;
+    object.mesh.type = MeshType::Imported;
+    object.mesh.imported = primitive.mesh;
+    if (material) return object;
+    // SPEC 2.1's mapping: glTF's roughness is URP's perceptual roughness.
+    object.albedo = primitive.baseColor;
+    if (profile == Profile::Legacy) return object;  // diffuse only: lambert with that albedo
+    object.brdf = Brdf::Srp;
+    object.metallic = primitive.metallic;
+    object.smoothness = 1 - primitive.roughness;
+    return object;
+  }
+
+  Light importedLight(const ImportedLight& in, const std::optional<Node>& defaults, const std::string& gltfFile,
+                      const std::string& context, std::optional<double> bareRange = std::nullopt) const {
+    Light light;
+    light.name = in.name;
+    light.type = in.type;
+    light.position = in.position;
+    light.direction = in.direction;
+    light.color = in.color;
+    light.intensity = in.intensity;
+    light.spotAngleDeg = in.spotAngleDeg;
+    light.innerSpotAngleDeg = in.innerSpotAngleDeg;
+    const auto defaultRange = defaults ? member(*defaults, "range") : std::nullopt;
+    if (in.range) light.range = *in.range;
+    else if (defaultRange) light.range = readNumber(*defaultRange, above(0));
+    else if (bareRange) light.range = *bareRange;
+    else if (in.type != LightType::Directional)
+      throwGltfError(GltfError(gltfFile, in.pointer, "the light '" + in.name +
+                                                          "' has no range and the import gives no light_defaults.range"),
+                     context);
+    if (!defaults) return light;
+    // What glTF has no word for comes from light_defaults, checked for
+    // this light's type as a scene light's keys would be.
+    if (auto mode = member(*defaults, "mode")) light.mode = readChoice(*mode, kLightModes);
+    if (auto shadows = member(*defaults, "shadows")) light.shadows = readBool(*shadows);
+    if (auto strength = member(*defaults, "shadow_strength")) light.shadowStrength = readNumber(*strength, closed(0, 1));
+    if (auto falloff = member(*defaults, "bake_falloff")) light.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
+    if (auto cookie = member(*defaults, "cookie")) light.cookie = readCookie(*cookie, light);
+    readShadowMap(*defaults, light);
+    return light;
+  }
+
+  // A GltfError as a scene error: the glTF file, its JSON path, the line and
+  // column in a .gltf text, and which scene imported it.
+  [[noreturn]] static void throwGltfError(const GltfError& error, const std::string& context) {
+    TextPosition where;
+    if (!error.pointer().empty() && std::filesystem::path(error.file()).extension() != ".glb") {
+      std::ifstream in(error.file(), std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      where = locateJsonPointer(text.str(), error.pointer()).value_or(TextPosition{});
+    }
+    throwSceneError(error.file(), error.pointer(), where, error.message() + " (" + context + ")");
+  }
+
+  // SPEC 2.1 `camera: {"gltf_camera": N}`: the first import's camera N.
+  Camera readGltfCamera(const Node& node, const std::vector<Import>& imports) const {
+    checkKeys(node, kGltfCameraKeys);
+    const Node index = *member(node, "gltf_camera");
+    if (imports.empty()) fail(index, "gltf_camera needs an import (SPEC 2.1); the scene has none");
+    const GltfContent& content = imports.front().content;
+    const int n = readInt(index, 0, kMaxExactInteger);
+    if (std::size_t(n) >= content.cameras.size() || !content.cameras[std::size_t(n)]) {
+      fail(index, "the first import has no camera " + std::to_string(n) + " on a node of its scene (it has " +
+                      std::to_string(content.cameras.size()) + " cameras)");
+    }
+    const auto camera = cameraFromGltf(*content.cameras[std::size_t(n)], content);
+    if (!camera) fail(index, "glTF camera " + std::to_string(n) + " has no usable view (its up is along its view direction)");
+    return *camera;
+  }
+
+ public:
+  // SPEC 2.1's bare glTF file: a scene of that import alone, with the scene
+  // format's defaults (image 128x128, srp forward, no ambient) and
+  // docs/scene-format.md's choices: the file's first camera on a node, else a
+  // perspective camera that frames the content, and light_defaults.range =
+  // the diagonal of the content's bounds (a light without a range reaches
+  // all of it).
+  Scene readBareGltf() const {
+    GltfImportRequest request;
+    request.file = file_;
+    GltfContent content;
+    try {
+      content = importGltf(request);
+    } catch (const GltfError& error) {
+      throwGltfError(error, "read as a bare glTF scene");
+    }
+    Scene scene;
+    scene.name = std::filesystem::path(file_).stem().string();
+    scene.description = "the glTF file " + std::filesystem::path(file_).filename().string() + " alone";
+    std::optional<Camera> camera;
+    for (const auto& c : content.cameras)
+      if (c && !camera) camera = cameraFromGltf(*c, content);
+    scene.camera = camera ? *camera : framingCamera(content);
+    const double diagonal = std::max(glm::length(content.boundsMax - content.boundsMin), kSmallestBareRange);
+    for (const ImportedPrimitive& primitive : content.primitives)
+      scene.objects.push_back(importedObject(primitive, std::nullopt, scene.pipeline.profile));
+    for (const ImportedLight& in : content.lights) {
+      Light light = importedLight(in, std::nullopt, file_, "read as a bare glTF scene", diagonal);
+      scene.lights.push_back(std::move(light));
+    }
+    scene.warnings = std::move(content.warnings);
+    if (content.lights.empty())
+      scene.warnings.push_back(file_ + ": the file has no KHR_lights_punctual lights: its image is black");
+    return scene;
+  }
+
+  // A light's range when the content has no extent (a single point).
+  static constexpr double kSmallestBareRange = 1;
+
+  // A perspective camera (60 degrees) looking at the centre of the content
+  // from the front (+Z) and a little above and to the right, at a distance
+  // that fits its bounding sphere.
+  static Camera framingCamera(const GltfContent& content) {
+    const Vec3 centre = (content.boundsMin + content.boundsMax) * 0.5;
+    const double radius = std::max(0.5 * glm::length(content.boundsMax - content.boundsMin), 1e-3);
+    Camera camera;
+    camera.projection = Projection::Perspective;
+    camera.fovYDeg = 60;
+    const double distance = radius / std::sin(camera.fovYDeg * std::numbers::pi / 360) * 1.05;
+    camera.position = centre + glm::normalize(Vec3(0.5, 0.5, 1)) * distance;
+    camera.target = centre;
+    camera.up = Vec3(0, 1, 0);
+    camera.nearPlane = std::max(distance - 1.5 * radius, distance * 1e-3);
+    camera.farPlane = distance + 1.5 * radius;
+    return camera;
+  }
+
+  // A glTF camera as the model's (SPEC 2.1): perspective with its yfov, or
+  // orthographic with height 2 * ymag; a perspective camera without zfar gets
+  // a far plane just beyond the farthest corner of the imported content.
+  static std::optional<Camera> cameraFromGltf(const ImportedCamera& in, const GltfContent& content) {
+    Camera camera;
+    camera.position = in.position;
+    camera.target = in.position + in.forward;
+    camera.up = in.up;
+    camera.nearPlane = in.znear;
+    if (in.perspective) {
+      camera.projection = Projection::Perspective;
+      camera.fovYDeg = in.yfovRad * 180 / std::numbers::pi;
+    } else {
+      camera.projection = Projection::Orthographic;
+      camera.orthoHeight = 2 * in.ymag;
+    }
+    if (!(camera.nearPlane > 0)) camera.nearPlane = 1e-3 * in.zfar.value_or(1.0);  // glTF allows 0 for orthographic
+    camera.farPlane = in.zfar.value_or(farthestCornerDistance(in.position, content) * kFarPlaneMargin);
+    if (!(camera.farPlane > camera.nearPlane)) camera.farPlane = camera.nearPlane * 1000;
+    if (lookAtProblem(camera.position, camera.target, camera.up)) return std::nullopt;
+    return camera;
+  }
+
+  // Beyond the farthest corner by this factor, so nothing is clipped at far.
+  static constexpr double kFarPlaneMargin = 1.01;
+
+  static double farthestCornerDistance(const Vec3& from, const GltfContent& content) {
+    double farthest = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 p((corner & 1) ? content.boundsMax.x : content.boundsMin.x,
+                   (corner & 2) ? content.boundsMax.y : content.boundsMin.y,
+                   (corner & 4) ? content.boundsMax.z : content.boundsMin.z);
+      farthest = std::max(farthest, glm::length(p - from));
+    }
+    return farthest;
+  }
+
+ private:
+  Camera readCamera(const Node& node, const std::vector<Import>& imports) const {
+    expectObject(node);
+    if (node.value.contains("gltf_camera")) return readGltfCamera(node, imports);
     Camera camera;
     if (auto projection = member(node, "projection")) camera.projection = readChoice(*projection, kProjections);
     // fov_y_deg on an orthographic camera (the default) would be silently
@@ -556,6 +808,8 @@ class SceneReader {
       case MeshType::Box:
         checkKeys(node, kBoxKeys, &others);
         if (auto size = member(node, "size")) mesh.boxSize = readVec3(*size, above(0));
+        break;
+      case MeshType::Imported:  // not a scene-file type: kMeshTypes cannot name it
         break;
     }
     return mesh;
@@ -936,6 +1190,11 @@ Scene loadSceneText(std::string_view text, const std::string& sourceName) {
 std::string_view deferredBufferName(DeferredBuffer buffer) { return choiceName(kDeferredBuffers, buffer); }
 
 Scene loadSceneFile(const std::string& path) {
+  if (isGltfPath(path)) {
+    Scene scene = SceneReader("", path).readBareGltf();
+    scene.sourcePath = path;
+    return scene;
+  }
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
     throwSceneError(path, "", {}, "cannot read the scene file: it is a directory");

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 namespace reference {
@@ -113,7 +114,8 @@ void ReferenceShadowMap::buildView(int v, const Bvh& bvh, int threads) {
   const int n = resolution_;
   const WorldTriangles& world = bvh.world();
   // Pass 1: the nearest triangle at every texel centre, and which surface it is.
-  std::vector<int> surface(std::size_t(n) * n, -1);  // object * 64 + piece, -1 none
+  // (object << 32) | piece, -1 none: imported meshes have any number of pieces.
+  std::vector<std::int64_t> surface(std::size_t(n) * n, -1);
   std::vector<std::optional<RayHit>> hits(surface.size());
   forEachRow(n, threads, [&](int j) {
     for (int i = 0; i < n; ++i) {
@@ -123,7 +125,7 @@ void ReferenceShadowMap::buildView(int v, const Bvh& bvh, int threads) {
       ShadowTexel& texel = texels_[std::size_t(v) * n * n + k];
       if (hits[k]) {
         const WorldTriangle& tri = world.triangles[hits[k]->triangle];
-        surface[k] = tri.object * 64 + tri.piece;
+        surface[k] = (std::int64_t(tri.object) << 32) | std::int64_t(std::uint32_t(tri.piece));
         texel.depth = std::clamp(view.project(t.ray.origin + hits[k]->t * t.ray.direction).depth, 0.0, 1.0);
       }
       texel.lo = texel.hi = texel.depth;

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <iostream>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -49,8 +50,12 @@ struct CatalogueEntry {
 // the run with exit 2 and the JSON path, before anything is written.
 std::vector<CatalogueEntry> loadCatalogue(const std::string& scenesDir) {
   std::vector<CatalogueEntry> catalogue;
-  for (const conformance::SceneFile& file : conformance::findSceneFiles(scenesDir))
-    catalogue.push_back({file, lighting::loadSceneFile(file.path.string()).description});
+  for (const conformance::SceneFile& file : conformance::findSceneFiles(scenesDir)) {
+    const lighting::Scene scene = lighting::loadSceneFile(file.path.string());
+    // An import's warnings (SPEC 2.1), once per run; the workers stay quiet.
+    for (const std::string& warning : scene.warnings) std::cerr << "lightcts: warning: " << warning << "\n";
+    catalogue.push_back({file, scene.description});
+  }
   return catalogue;
 }
 

@@ -27,6 +27,12 @@ packages=(
   # the evidence viewer's test reads the EXRs' floats exactly, independently
   # of the viewer's own data (OpenImageIO's Python module)
   python3-openimageio
+  # glTF 2.0 import (SPEC 2.1): tinygltf keeps KHR_lights_punctual's intensity
+  # and range apart (assimp folds intensity into the colour and drops range)
+  libtinygltf-dev
+  # real glTF content and deliberately broken files for the import's tests
+  # (about 75 MB under /usr/share/assimp/models; their tests skip without it)
+  assimp-testmodels
 )
 
 missing=()

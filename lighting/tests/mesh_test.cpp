@@ -67,9 +67,29 @@ TEST(SphereMesh, WindsOutwardAndCloses) {
   EXPECT_EQ(m.triangles.size(), std::size_t(7 * (2 * 5 - 2)));
   expectOutwardWinding(m);
   expectClosed(m);
+  // Each component is rounded to float32 (relative error <= 2^-24), so a
+  // vector's length moves by at most 2^-24 of it.
   for (std::size_t i = 0; i < m.positions.size(); ++i) {
-    EXPECT_NEAR(glm::length(m.positions[i]), 2.0, 1e-12);
-    EXPECT_NEAR(glm::length(m.normals[i]), 1.0, 1e-12);
+    EXPECT_NEAR(glm::length(m.positions[i]), 2.0, 2.0 * 0x1p-24);
+    EXPECT_NEAR(glm::length(m.normals[i]), 1.0, 0x1p-24);
+  }
+}
+
+// The generator's values are float32 values (what every backend draws),
+// component by component: a compiler that folds the rounding away fails here.
+TEST(Meshes, EveryComponentIsAFloat32Value) {
+  for (const MeshType type : {MeshType::Plane, MeshType::Sphere, MeshType::Box}) {
+    MeshSpec spec;
+    spec.type = type;
+    spec.planeSizeX = 10.0 / 3;
+    spec.subdivisions = 7;
+    spec.sphereSegments = 24;
+    spec.sphereRings = 12;
+    spec.boxSize = {0.1, 0.3, 0.7};
+    const Mesh m = buildMesh(spec);
+    for (const auto* values : {&m.positions, &m.normals})
+      for (const Vec3& v : *values)
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(v[c], double(float(v[c]))) << "mesh type " << int(type);
   }
 }
 

@@ -1,0 +1,25 @@
+// How an error message names the kind of a JSON value ("a number", "an
+// object"), for the scene loader and the glTF checks alike; any nlohmann
+// json type (ordered or not).
+#pragma once
+
+#include <string>
+
+namespace lighting {
+
+template <typename Json>
+std::string describeJsonType(const Json& value) {
+  switch (value.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "a number";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::object: return "an object";
+    default: return "an unsupported value";
+  }
+}
+
+}  // namespace lighting
