@@ -62,6 +62,8 @@ constexpr long long kMaxImageSide = 8192;
 constexpr long long kMaxTessellation = 4096;
 constexpr long long kMaxLightmapResolution = 4096;
 constexpr long long kMaxFrames = 10000;
+// glTF indices (a scene, a camera) beyond this are no file's.
+constexpr long long kMaxGltfIndex = 1 << 30;
 // Below this sine of the angle between up and the view direction, lookAt has
 // no usable basis.
 constexpr double kMinUpSine = 1e-6;
@@ -456,7 +458,7 @@ class SceneReader {
     requireMember(node, "gltf");
     Import import;
     import.request.file = (std::filesystem::path(file_).parent_path() / readString(*member(node, "gltf"))).string();
-    if (auto scene = member(node, "scene")) import.request.scene = readInt(*scene, 0, kMaxExactInteger);
+    if (auto scene = member(node, "scene")) import.request.scene = readInt(*scene, 0, kMaxGltfIndex);
     if (auto transform = member(node, "transform")) import.request.transform = importMatrix(readTransform(*transform));
     // The material every imported object gets instead of the file's, when given.
     std::optional<Object> material;
@@ -571,7 +573,7 @@ class SceneReader {
     const Node index = *member(node, "gltf_camera");
     if (imports.empty()) fail(index, "gltf_camera needs an import (SPEC 2.1); the scene has none");
     const GltfContent& content = imports.front().content;
-    const int n = readInt(index, 0, kMaxExactInteger);
+    const int n = readInt(index, 0, kMaxGltfIndex);
     if (std::size_t(n) >= content.cameras.size() || !content.cameras[std::size_t(n)]) {
       fail(index, "the first import has no camera " + std::to_string(n) + " on a node of its scene (it has " +
                       std::to_string(content.cameras.size()) + " cameras)");

@@ -113,11 +113,12 @@ std::vector<std::string> scenesOf(const Entries& entries) {
     const auto rank = [](const std::string& s) {
       if (s == "lights64-1280x720") return 0;
       if (s.rfind("dense64-", 0) == 0) return 1;
-      if (s.rfind("lightmap-", 0) == 0) return 2;
-      if (s == "curve-lights") return 3;
-      if (s == "curve-resolution") return 4;
-      if (s == "curve-objects") return 5;
-      return 6;
+      if (s.rfind("meshes64-", 0) == 0) return 2;
+      if (s.rfind("lightmap-", 0) == 0) return 3;
+      if (s == "curve-lights") return 4;
+      if (s == "curve-resolution") return 5;
+      if (s == "curve-objects") return 6;
+      return 7;
     };
     return rank(a) < rank(b);
   });

@@ -81,7 +81,7 @@ std::vector<NumberColumn> numberColumns(const Entries& entries) {
       {"n", [](const BenchEntry& e) { return e.count ? std::optional<double>(e.count) : std::nullopt; }},
   };
   const std::vector<std::pair<std::string, std::string>> known = {
-      {"wall_ms", "wall ms"}, {"device_ms", "device ms"}, {"pixels", "pixels"}, {"lights", "lights"},
+      {"wall_ms", "wall ms"}, {"device_ms", "device ms"}, {"pixels", "pixels"}, {"triangles", "triangles"}, {"lights", "lights"},
       {"lights_per_pixel", "lights/pixel"}, {"pixels_per_s", "pixels/s"},
       {"pixel_light_evals_per_s", "pixel-light evals/s"}, {"err_rmse", "err_rmse"},
       {"err_max_abs", "err_max_abs"}, {"err_psnr_db", "err_psnr_db"},

@@ -71,6 +71,12 @@ std::string denseFieldSceneName(const RunState& run);
 NamedFrames denseFieldModes(const RunState& run);
 void registerDenseFieldModes(Registrar& r, const NamedFrames& frames);
 
+// The mesh field (meshes64-<W>x<H>, mesh_field.cpp): the field with eight
+// imported 2CylinderEngine.glb meshes instead of its boxes and half its lights
+// spots, in every light path; empty (with a note) without the package.
+NamedFrames meshFieldModes(const RunState& run);
+void registerMeshFieldModes(Registrar& r, const NamedFrames& frames);
+
 // upload/<b>/lights64-1280x720/cookies/<N>: prepareTextures of a fresh
 // prepared scene of the cookie field with N x N cookies, on the shipped-shader
 // backend (registered with its benchmarks, before the full-shader ones).

@@ -77,7 +77,6 @@ namespace {
 
 // The view both synthetic scenes share: straight down on y = 0 through an
 // orthographic camera kFieldZ units high, so the field fills the image.
-constexpr double kFieldZ = 7.2;  // the view's height in world units
 
 Scene topDownScene(int width, int height, const std::string& name) {
   Scene s;

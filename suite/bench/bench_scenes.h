@@ -42,6 +42,9 @@ std::optional<lighting::DeferredBuffer> deferredBufferOf(FrameMode mode);
 // the inverse of what fieldScene sets for a mode.
 FrameMode frameModeOf(const lighting::Pipeline& pipeline);
 
+// The field's depth in world units: the orthographic view's height.
+inline constexpr double kFieldZ = 7.2;
+
 struct FieldSpec {
   int width = 1280, height = 720;
   // The floor: tileColumns x tileRows tiles covering exactly the view

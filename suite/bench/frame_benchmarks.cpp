@@ -91,6 +91,7 @@ std::vector<ErrorCandidate> registerAll(const std::shared_ptr<RunState>& run) {
     return registrar.errorCandidates();
   }
   registerDenseFieldModes(registrar, denseFieldModes(*run));
+  registerMeshFieldModes(registrar, meshFieldModes(*run));
   registerLightmapModes(registrar);
   registerCurves(registrar);
   if (run->settings.suiteScenes) registerSuiteScenes(registrar);

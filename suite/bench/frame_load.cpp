@@ -41,6 +41,7 @@ FrameLoad loadOf(const Frame& frame) {
   if (frame.scene().pipeline.path == RenderPath::Deferred) deferred.emplace(frame);
 
   const reference::WorldTriangles world = reference::buildWorldTriangles(*frame.prepared);
+  load.triangles = double(world.triangles.size());
   const reference::Bvh bvh(world);
   // At most 256x256 samples: one every `stride` pixels each way.
   const int stride = std::max(1, int(std::ceil(std::sqrt(load.pixels / 65536.0))));

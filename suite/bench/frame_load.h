@@ -22,6 +22,9 @@ struct FrameLoad {
   // the directional lights and the lights of the pixel's cluster.
   double lightsPerPixel = 0;
   int keptLights = 0;
+  // Every triangle the frame draws (each object's mesh once): what a mesh
+  // field costs in vertex work beside the synthetic one.
+  double triangles = 0;
 };
 
 FrameLoad loadOf(const lighting::Frame& frame);

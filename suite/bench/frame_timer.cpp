@@ -15,6 +15,7 @@ void setLoadCounters(benchmark::State& state, const RunState& run, const FrameLo
   auto& c = state.counters;
   const double iterations = double(state.iterations());
   c["pixels"] = load.pixels;
+  c["triangles"] = load.triangles;
   c["lights"] = double(load.keptLights);
   c["lights_per_pixel"] = load.lightsPerPixel;
   c["pixels_per_s"] = benchmark::Counter(load.pixels * iterations, benchmark::Counter::kIsRate);
