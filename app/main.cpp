@@ -82,6 +82,11 @@ int main(int argc, char** argv) {
   referenceCmd->add_flag("--tolerance-terms", toleranceTerms,
                          "Also write tolerance-arithmetic.exr and tolerance-shift.exr, the two parts of tolerance.exr");
   referenceCmd->add_option("--out", out, "Output folder")->required();
+  auto* budgetCmd = cli.add_subcommand("budget", "Where the light budgets bite: reach, kept and loss maps (SPEC 5.5)");
+  addScene(budgetCmd, true);
+  bool allFrames = false;
+  budgetCmd->add_flag("--all-frames", allFrames, "Every frame of an animated scene, with the popping score");
+  budgetCmd->add_option("--out", out, "Output folder")->required();
   auto* renderCmd = cli.add_subcommand("render", "Render a scene on a backend to an RGBA float EXR");
   addScene(renderCmd, true);
   addBackend(renderCmd);
@@ -123,6 +128,7 @@ int main(int argc, char** argv) {
   runCmd->add_flag("--list", run.listOnly, "Print the selected tests (with --shard, the shard's) and run nothing");
   runCmd->add_option("--mutant", run.mutants, "Run only these mutants (default: every one)");
   runCmd->add_flag("--no-mutants", run.noMutants, "Skip the mutation check");
+  runCmd->add_flag("--no-budgets", run.noBudgets, "Leave out the light budgets of each scene (SPEC 5.5) from the report");
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
   runCmd->add_flag("--mutants-all-scenes", run.mutantsAllScenes,
                    "Check each mutant against every selected scene (the whole kill table), not only its killers");
@@ -197,6 +203,10 @@ int main(int argc, char** argv) {
   if (*probeDriverCmd) return app::runProbeDriverCommand(probeBackend, probeDriver, o, e);
   if (*lightsCmd) return app::runLightsCommand(scene, o, e);
   if (*referenceCmd) return app::runReferenceCommand(scene, ideal, toleranceTerms, out, o, e);
+  if (*budgetCmd) {
+    scene.frameGiven = budgetCmd->get_option("--frame")->count() > 0;
+    return app::runBudgetCommand(scene, allFrames, out, o, e);
+  }
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
   scene.frameGiven = compareCmd->get_option("--frame")->count() > 0;
   if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);

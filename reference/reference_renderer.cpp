@@ -331,6 +331,22 @@ std::vector<std::unique_ptr<ReferenceShadowMap>> ReferenceRenderer::shadowMaps(c
   return maps;
 }
 
+std::optional<VisibleSurface> ReferenceRenderer::visibleSurface(const Frame& frame, int x, int y) const {
+  const Ray ray = frame.view.rayThroughPixel(x + 0.5, y + 0.5);
+  const double cosine = glm::dot(ray.direction, frame.view.forward);
+  const auto hit = bvh_.nearestHit(ray, frame.view.camera.nearPlane / cosine, frame.view.camera.farPlane / cosine);
+  if (!hit) return std::nullopt;
+  const WorldTriangle& tri = world_.triangles[hit->triangle];
+  const double b0 = 1.0 - hit->b1 - hit->b2;
+  VisibleSurface surface;
+  surface.point = b0 * tri.p0 + hit->b1 * tri.p1 + hit->b2 * tri.p2;
+  surface.normal = glm::normalize(b0 * world_.vertices[tri.vertex[0]].normal +
+                                  hit->b1 * world_.vertices[tri.vertex[1]].normal +
+                                  hit->b2 * world_.vertices[tri.vertex[2]].normal);
+  surface.object = tri.object;
+  return surface;
+}
+
 ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOptions& options) const {
   const int width = frame.view.width, height = frame.view.height;
   // `--ideal` traces visibility instead of reading maps (SPEC 3.9).

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -82,11 +83,22 @@ struct ReferenceImages {
 // (conformance::SceneReferences, the reference cache).
 bool readsFilteredTextures(const lighting::PreparedScene& prepared);
 
+// What a pixel centre sees, as render() finds it: the nearest front-facing
+// hit between the near and far planes, its point, the interpolated unit
+// normal and the object.
+struct VisibleSurface {
+  lighting::Vec3 point{0.0};
+  lighting::Vec3 normal{0.0, 1.0, 0.0};
+  int object = -1;
+};
+
 // Built once per scene (world triangles and BVH), then renders any frame of it.
 class ReferenceRenderer {
  public:
   explicit ReferenceRenderer(std::shared_ptr<const lighting::PreparedScene> prepared);
   ReferenceImages render(const lighting::Frame& frame, const ReferenceOptions& options = {}) const;
+  // The surface at pixel (x, y)'s centre; nullopt for the background.
+  std::optional<VisibleSurface> visibleSurface(const lighting::Frame& frame, int x, int y) const;
   std::size_t triangleCount() const { return world_.triangles.size(); }
   // SPEC 3.9: the reference's shadow maps of `frame`, one per scene light
   // with a shadow map (null for the others), as render() builds them.

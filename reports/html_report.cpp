@@ -51,6 +51,7 @@ std::string htmlReport(const Json& results, const fs::path& runDir, const fs::pa
   html::detectedMismatchSections(out, page);
   html::allTestsTable(out, page);
   html::poppingTables(out, page);
+  html::budgetSections(out, page);
   html::slowestTests(out, page);
   html::pageEnd(out);
   return out.str();

@@ -23,6 +23,8 @@ std::string testAnchor(std::string_view testName);   // the id of a test's secti
 std::string testLink(const Json& test);              // the name, linked to its section when it has one
 std::string cell(std::string_view text);             // <td>escaped</td>
 std::string numberCell(std::string_view text);       // <td class="n">escaped</td>
+// An image of the run (its path relative to the run folder), linked, with a caption.
+void figure(std::ostream& out, const Page& page, const std::string& runRelative, std::string_view label);
 
 // html_sections.cpp
 void header(std::ostream& out, const Page& page);
@@ -36,5 +38,8 @@ void attentionSections(std::ostream& out, const Page& page);
 void detectedMismatchSections(std::ostream& out, const Page& page);
 void allTestsTable(std::ostream& out, const Page& page);
 void poppingTables(std::ostream& out, const Page& page);
+
+// html_budgets.cpp: each scene's light budgets (SPEC 5.5) beside its verdicts.
+void budgetSections(std::ostream& out, const Page& page);
 
 }  // namespace reports::html

@@ -14,13 +14,6 @@ bool framePassed(const Json& frame) {
   return comparison::parseVerdict(textField(frame, "verdict")) == comparison::Verdict::Pass;
 }
 
-void figure(std::ostream& out, const Page& page, const std::string& runRelative, std::string_view label) {
-  const std::string href = escapeText(imageHref(runRelative, page.runDir, page.reportDir));
-  out << "<figure><a href=\"" << href << "\"><img src=\"" << href << "\" alt=\"" << escapeText(label) << ": "
-      << escapeText(runRelative) << "\"></a><figcaption>" << escapeText(label) << "<br>" << escapeText(runRelative);
-  if (!imageExists(runRelative, page.runDir)) out << " <span class=\"missing\">(missing when the report was written)</span>";
-  out << "</figcaption></figure>\n";
-}
 
 // Null in a result means NaN or infinity (results.json has neither).
 std::string channels(const Json& values, bool nullIsNonFinite = false) {
@@ -143,6 +136,14 @@ bool animated(const Json& test) {
 }
 
 }  // namespace
+
+void figure(std::ostream& out, const Page& page, const std::string& runRelative, std::string_view label) {
+  const std::string href = escapeText(imageHref(runRelative, page.runDir, page.reportDir));
+  out << "<figure><a href=\"" << href << "\"><img src=\"" << href << "\" alt=\"" << escapeText(label) << ": "
+      << escapeText(runRelative) << "\"></a><figcaption>" << escapeText(label) << "<br>" << escapeText(runRelative);
+  if (!imageExists(runRelative, page.runDir)) out << " <span class=\"missing\">(missing when the report was written)</span>";
+  out << "</figcaption></figure>\n";
+}
 
 void attentionSections(std::ostream& out, const Page& page) {
   std::vector<const Json*> tests;

@@ -362,6 +362,14 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
                           {"duration_s", s.results["duration_s"]},
                           {"machine", s.results["machine"]}});
   }
+  // Each shard computed the light budgets of the scenes it held; a scene
+  // split across shards has the same budgets in each (they do not depend on
+  // the backend), so the first one stays.
+  Json budgets = Json::object();
+  for (const Shard& s : shards)
+    if (s.results.contains("budgets"))
+      for (const auto& [scene, budget] : s.results["budgets"].items())
+        if (!budgets.contains(scene)) budgets[scene] = budget;
   Json merged = {{"format", "lightcts-results"},
                  {"version", 1},
                  {"lightcts_revision", first["lightcts_revision"]},
@@ -388,12 +396,14 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
                  {"backends", backends},
                  {"tests", tests},
                  {"mutants", mutants},
+                 {"budgets", budgets},
                  {"slowest", slowestTests(tests)}};
 
   // Everything checked: now the folder is written.
   fs::create_directories(outDir);
   removeStaleRunOutputs(outDir);
   for (const Shard& s : shards) copyFolder(s.dir / "evidence", outDir / "evidence");
+  for (const Shard& s : shards) copyFolder(s.dir / "budgets", outDir / "budgets");
   for (const MergedMutant& m : mergedMutants) {
     if (!m.evidenceShard) continue;
     const std::string name = m.record["mutant"].get<std::string>() + "." + m.record["backend"].get<std::string>();

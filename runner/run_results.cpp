@@ -61,7 +61,7 @@ std::string scenesDigest(const std::vector<fs::path>& sceneFiles, const fs::path
 }
 
 void removeStaleRunOutputs(const fs::path& outDir) {
-  for (const char* stale : {"evidence", "mutants", "report"}) fs::remove_all(outDir / stale);
+  for (const char* stale : {"evidence", "mutants", "budgets", "report"}) fs::remove_all(outDir / stale);
   for (const char* stale : {"results.json", "junit.xml", "results.csv", "failures.csv"}) fs::remove(outDir / stale);
   const fs::path logsDir = outDir / "logs";
   if (!fs::is_directory(logsDir)) return;

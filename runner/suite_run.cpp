@@ -4,6 +4,7 @@
 #include "comparison/verdict.h"
 #include "conformance/mutant_killers.h"
 #include "conformance/scene_catalogue.h"
+#include "runner/run_budgets.h"
 #include "lighting/scene_loader.h"
 #include "runner/expected_failures.h"
 #include "runner/part_run.h"
@@ -600,6 +601,20 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     summaries.push_back(line.str());
   }
 
+  // SPEC 5.5 for the report: once per scene this run (or shard) holds,
+  // whatever the backends; mutant-only runs check no scene of their own.
+  Json budgets = Json::object();
+  if (!options.noBudgets && !options.mutantsOnly) {
+    const auto budgetStart = Clock::now();
+    std::set<std::string> heldCases;
+    for (const RunUnit& unit : units) heldCases.insert(unit.test.substr(0, unit.test.rfind('.')));
+    std::vector<BudgetScene> budgetScenes;
+    for (const CatalogueEntry& scene : catalogue)
+      if (heldCases.contains(scene.file.caseName())) budgetScenes.push_back({scene.file.caseName(), scene.file.path});
+    budgets = runBudgets(budgetScenes, outDir);
+    summaries.push_back("run: light budgets of " + std::to_string(budgetScenes.size()) + " scene(s) in " +
+                        formatMs(std::chrono::duration<double, std::milli>(Clock::now() - budgetStart).count()));
+  }
   const long long imagesDropped = limitEvidenceImages(tests, outDir, options.evidenceLimit);
   const Json slowest = slowestTests(tests);
   const Json results = {{"format", "lightcts-results"},
@@ -627,6 +642,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
                         {"backends", backendsJson},
                         {"tests", tests},
                         {"mutants", mutantsJson},
+                        {"budgets", budgets},
                         {"slowest", slowest}};
   writeRunOutputs(results, outDir);
 

@@ -32,6 +32,7 @@ struct RunOptions {
   std::vector<std::string> caselists;
   std::vector<std::string> mutants;   // --mutant: these only; empty: every mutant (unless noMutants)
   bool noMutants = false;             // --no-mutants
+  bool noBudgets = false;             // --no-budgets: leave out the report's light budgets (SPEC 5.5)
   bool mutantsOnly = false;           // --mutants-only: the mutation check alone (ctest -L mutants)
   // --mutants-all-scenes: every mutant against every selected scene (the
   // whole kill table), not only against its killers (suite/mutant_killers.def).

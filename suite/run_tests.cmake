@@ -190,3 +190,17 @@ add_test(NAME run.compare.run-without-out-still-exits-2
          COMMAND sh -c "out=$($<TARGET_FILE:lightcts> run --backend vulkan --scenes '${run_scenes}' --no-mutants 2>&1); \
                         s=$?; echo \"$out\"; test $s -eq 2 && echo \"$out\" | grep -q 'run: --out is required'")
 set_tests_properties(run.compare.run-without-out-still-exits-2 PROPERTIES LABELS "run;cli")
+
+# The light budgets in the report (SPEC 5.5): a run of the three scenes the
+# budget tests derive by hand (reference/tests/light_budget_test.cpp) shows
+# the cutting ones' maps and figures and the legacy one's single line, and
+# every image loads in headless Chromium.
+add_run_test(budget-report 0
+  "--backend;vulkan;--scenes;${CMAKE_CURRENT_SOURCE_DIR}/scenes;--no-mutants;--include;limits.popping-64.*;--include;per-object.eleven-lights.*;--include;legacy.four-pixel-four-vertex.*"
+  "" "limits.popping-64.vulkan=Pass;per-object.eleven-lights.vulkan=Pass;legacy.four-pixel-four-vertex.vulkan=Pass"
+  "vulkan=ran" "light budgets of 3 scene")
+set_tests_properties(run.budget-report PROPERTIES FIXTURES_SETUP budget-run)
+add_test(NAME run.budget-report-shows-maps-in-chromium
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check_budget_report.sh ${run_out}/budget-report)
+set_tests_properties(run.budget-report-shows-maps-in-chromium PROPERTIES LABELS "run;report;vulkan;budget"
+  FIXTURES_REQUIRED budget-run SKIP_RETURN_CODE 77)

@@ -101,5 +101,11 @@ add_test(NAME cli.unknown-backend-exits-2
          COMMAND sh -c "$<TARGET_FILE:lightcts> compare --scene ${scene} --backend metal; test $? -eq 2")
 add_test(NAME cli.unknown-option-exits-2
          COMMAND sh -c "$<TARGET_FILE:lightcts> lights --scene ${scene} --bogus; test $? -eq 2")
+# `lightcts budget` (SPEC 5.5): a frame out of range and no scene are bad input.
+add_test(NAME cli.budget-frame-out-of-range-exits-2
+         COMMAND sh -c "$<TARGET_FILE:lightcts> budget --scene ${scene} --frame 99 --out ${CMAKE_BINARY_DIR}/test-out/budget-bad; test $? -eq 2")
+add_test(NAME cli.budget-without-scene-exits-2
+         COMMAND sh -c "$<TARGET_FILE:lightcts> budget --out ${CMAKE_BINARY_DIR}/test-out/budget-bad; test $? -eq 2")
 set_tests_properties(cli.typo-in-scene-exits-2 cli.typo-in-scene-names-the-path cli.unknown-backend-exits-2
-  cli.unknown-option-exits-2 PROPERTIES LABELS "cli")
+  cli.unknown-option-exits-2 cli.budget-frame-out-of-range-exits-2 cli.budget-without-scene-exits-2
+  PROPERTIES LABELS "cli")
