@@ -26,8 +26,13 @@ EntryColumn counterColumn(std::string header, const std::string& key) {
 }
 
 std::string brokenMark(const BenchEntry& e) {
-  if (!isBroken(e)) return "";
-  return " <span class=\"err\">broken: " + fmt(counter(e, "err_nonfinite_pixels")) + " non-finite pixels</span>";
+  std::string mark;
+  if (isBroken(e)) mark += " <span class=\"err\">broken: " + fmt(counter(e, "err_nonfinite_pixels")) + " non-finite pixels</span>";
+  // A device time its wall time rules out (suite/bench/time_source.h): the
+  // entry is wall-timed, and says why.
+  if (counter(e, "device_time_flagged"))
+    mark += " <span class=\"err\">" + escapeText(e.label.empty() ? "wall time: a device time was flagged" : e.label) + "</span>";
+  return mark;
 }
 
 EntryColumn markedTextColumn(std::string header, std::function<std::string(const BenchEntry&)> text) {
@@ -88,7 +93,7 @@ std::vector<NumberColumn> numberColumns(const Entries& entries) {
       {"err_perceptual_fail", "err_perceptual_fail"}, {"err_nonfinite_pixels", "err_nonfinite_pixels"},
       {"bake_ms", "bake ms"}, {"bake_runs", "bake runs"},
       {"lightmap_texels", "lightmap texels"}, {"flops_per_pixel_light", "flops/pixel-light"},
-      {"limit_ms", "limit ms"}};
+      {"limit_ms", "limit ms"}, {"device_time_flagged", "device time flagged"}};
   for (const auto& [key, header] : known)
     columns.push_back({header, [key = key](const BenchEntry& e) { return counter(e, key); }});
   columns.push_back({"\u00d7 limit", limitRatio, 3});

@@ -117,6 +117,15 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
       }
       (startsWith(a, "--cluster_tile=", value) ? settings.clusterGrid.tileSize : settings.clusterGrid.depthSlices) =
           int(n);
+    } else if (i > 0 && startsWith(a, "--time_source=", value)) {
+      if (value == "auto") settings.timeSource = TimeSource::Calibrated;
+      else if (value == "device") settings.timeSource = TimeSource::Device;
+      else if (value == "wall") settings.timeSource = TimeSource::Wall;
+      else {
+        std::fprintf(stderr, "render_bench: --time_source is auto, device or wall, not '%s'\n", std::string(value).c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
     } else if (i > 0 && a == "--quick") settings.quick = true;
     else if (i > 0 && a == "--suite_scenes") settings.suiteScenes = true;
     else parsed.rest.push_back(argv[i]);

@@ -15,12 +15,18 @@
 
 namespace bench {
 
+// Which time the frame benchmarks report: the device's when a calibration
+// frame shows it covers the work (time_source.h), or as --time_source says
+// (`device` is for tests that need a device timer known to miss work).
+enum class TimeSource { Calibrated, Device, Wall };
+
 struct Settings {
   std::string backend = "vulkan";
   std::string driver;  // as given; empty: the backend's default (llvmpipe for GL)
   std::optional<double> peakGflops;
   bool quick = false;
   bool suiteScenes = false;
+  TimeSource timeSource = TimeSource::Calibrated;  // --time_source=auto|device|wall
   std::filesystem::path scenes;  // --scenes; the caller's default when not given
   // --ideal_cache=DIR: the ideal references, untimed and the same for every
   // combination, read from DIR when an earlier process of the run left them

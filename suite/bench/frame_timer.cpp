@@ -1,8 +1,10 @@
 #include "suite/bench/frame_timer.h"
 
 #include "suite/bench/lighting_cost.h"
+#include "suite/bench/time_source.h"
 #include "suite/bench/wall_clock.h"
 
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <optional>
@@ -64,6 +66,8 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
     run.lastDrawn[&backend] = &bench;
     double wallMs = 0, deviceMs = 0, shadowMs = 0;
     bool deviceEveryTime = true, shadowEveryTime = bench.frame.shadows.any();
+    int flagged = 0;                // iterations whose device time the wall time rules out
+    double flaggedDevice = 0, flaggedWall = 0;  // the first of them, for the label
     imaging::Image image;  // frame_readback: the last one read back
     for (auto _ : state) {
       const auto start = Clock::now();
@@ -80,7 +84,16 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
       wallMs += wall;
       if (device) deviceMs += *device;
       else deviceEveryTime = false;
-      state.SetIterationTime((run.deviceTime && device && !withReadback ? *device : wall) / 1e3);
+      // The device's time when it is the run's source and can be right
+      // (time_source.h); otherwise, and for the rest of this benchmark
+      // once one iteration's could not, the wall time.
+      bool useDevice = run.deviceTime && device && !withReadback && !run.wallTimeOnly.contains(&bench);
+      if (useDevice && !deviceTimeIsPlausible(*device, wall)) {
+        if (flagged++ == 0) flaggedDevice = *device, flaggedWall = wall;
+        run.wallTimeOnly.insert(&bench);
+        useDevice = false;
+      }
+      state.SetIterationTime((useDevice ? *device : wall) / 1e3);
     }
     auto& c = state.counters;
     c["wall_ms"] = benchmark::Counter(wallMs, benchmark::Counter::kAvgIterations);
@@ -89,6 +102,15 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
     if (shadowEveryTime && state.iterations() > 0)
       c["shadow_pass_ms"] = benchmark::Counter(shadowMs, benchmark::Counter::kAvgIterations);
     setLoadCounters(state, run, bench.load, bench.frame.features.specularBrdf);
+    if (flagged > 0 || run.wallTimeOnly.contains(&bench)) {
+      c["device_time_flagged"] = double(flagged);
+      char label[200];
+      std::snprintf(label, sizeof label,
+                    flagged > 0 ? "wall time: device time %.3g ms below half the wall time %.3g ms (a timer that missed work, or a stall outside its interval)"
+                                : "wall time: an earlier repetition's device time was below half its wall time",
+                    flaggedDevice, flaggedWall);
+      state.SetLabel(label);
+    }
     // One readback per draw: frame_readback's last image when it has one.
     // The error (and its ideal, when it is not known yet) after the timed
     // loop: untimed, and before the next benchmark starts.

@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace bench {
@@ -30,6 +31,10 @@ struct RunState {
   std::map<std::string, ImageError> errors;
   std::map<const backends::Backend*, const BenchFrame*> lastDrawn;  // what each backend drew last
   bool deviceTime = false;  // the benchmarks' time is the device's (calibrateTimeSource)
+  // Benchmarks one of whose iterations had a device time its wall time rules
+  // out (deviceTimeIsPlausible): every later iteration and repetition of
+  // them is timed by the wall clock.
+  std::set<const BenchFrame*> wallTimeOnly;
 
   // The combination's suffix (vulkan, gl-egl, gl-osmesa-softpipe, ...): part of every name.
   const std::string& suffix() const { return settings.combination->suffix; }
