@@ -4,20 +4,9 @@
 # is below half its wall time: each entry must say so (device_time_flagged,
 # a label beginning "wall time") and report its wall time, never the device's.
 # -DRENDER_BENCH=<render_bench> -DOUT=<json file>
-file(REMOVE "${OUT}")
-execute_process(
-  COMMAND "${RENDER_BENCH}" --backend=gl-egl --quick --time_source=device --benchmark_min_time=0.01
-          --benchmark_repetitions=2 "--benchmark_filter=^frame/gl-egl/curve-lights/all-lights/(1|64)(/|$)"
-          "--benchmark_out=${OUT}" --benchmark_out_format=json
-  RESULT_VARIABLE status)
-if(status EQUAL 3)
-  message(FATAL_ERROR "LIGHTCTS_SKIP: no gl-egl here")
-endif()
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "render_bench exited with ${status}")
-endif()
-file(READ "${OUT}" json)
-string(JSON count LENGTH "${json}" benchmarks)
+set(RENDER_BENCH_BACKEND gl-egl)
+include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
+run_render_bench("^frame/gl-egl/curve-lights/all-lights/(1|64)(/|$)" --time_source=device --benchmark_repetitions=2)
 math(EXPR last "${count} - 1")
 set(checked 0)
 foreach(i RANGE ${last})

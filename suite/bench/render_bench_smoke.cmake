@@ -1,4 +1,4 @@
-# Shared by the bench.*-smoke scripts: run render_bench on Vulkan with
+# Shared by the bench.*-smoke scripts: run render_bench (on Vulkan unless RENDER_BENCH_BACKEND says otherwise) with
 # --quick (or the set RENDER_BENCH_SET names: "" for the full set), turn "no device" into ctest's skip, and walk the JSON it wrote.
 # Expects -DRENDER_BENCH=<render_bench> -DOUT=<json file>.
 
@@ -7,15 +7,19 @@
 if(NOT DEFINED RENDER_BENCH_SET)
   set(RENDER_BENCH_SET --quick)
 endif()
+# The combination; a smoke of another one sets it before including this file.
+if(NOT DEFINED RENDER_BENCH_BACKEND)
+  set(RENDER_BENCH_BACKEND vulkan)
+endif()
 macro(run_render_bench filter)
   file(REMOVE "${OUT}")
   execute_process(
-    COMMAND "${RENDER_BENCH}" --backend=vulkan ${RENDER_BENCH_SET} --benchmark_min_time=0.01 ${ARGN}
+    COMMAND "${RENDER_BENCH}" --backend=${RENDER_BENCH_BACKEND} ${RENDER_BENCH_SET} --benchmark_min_time=0.01 ${ARGN}
             "--benchmark_filter=${filter}" "--benchmark_out=${OUT}" --benchmark_out_format=json
     RESULT_VARIABLE status)
   if(status EQUAL 3)
     # ctest's SKIP_REGULAR_EXPRESSION turns this into a skip.
-    message(FATAL_ERROR "LIGHTCTS_SKIP: no Vulkan device here")
+    message(FATAL_ERROR "LIGHTCTS_SKIP: no ${RENDER_BENCH_BACKEND} here")
   endif()
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "render_bench exited with ${status}")
