@@ -29,24 +29,26 @@ int runBudgetCommand(const SceneArguments& args, bool allFrames, const std::stri
     const SceneInput input = loadSceneInput(args);
     makeOutputDirectory(outDir);
     const reference::ReferenceRenderer renderer(input.prepared);
-    const int frames = allFrames ? input.prepared->scene.frames.count : 1;
+    // SPEC 5.5: an animated scene gives every frame unless --frame picks one.
+    const bool everyFrame = allFrames || (!args.frameGiven && input.prepared->scene.frames.count > 1);
+    const int frames = everyFrame ? input.prepared->scene.frames.count : 1;
     Json framesJson = Json::array();
     std::vector<reports::Rgb8Image> strip;
     std::optional<imaging::Image> previousLoss;
     for (int f = 0; f < frames; ++f) {
-      const lighting::Frame frame = allFrames ? lighting::prepareFrame(input.prepared, f) : input.frame;
+      const lighting::Frame frame = everyFrame ? lighting::prepareFrame(input.prepared, f) : input.frame;
       const reference::LightBudget budget = reference::computeLightBudget(renderer, frame);
       std::optional<double> popping;
       if (previousLoss) popping = runner::budgetPoppingScore(*previousLoss, budget.lossRgb);
       previousLoss = budget.lossRgb;
-      const fs::path dir = allFrames ? fs::path(outDir) / ("frame-" + std::to_string(f)) : fs::path(outDir);
+      const fs::path dir = everyFrame ? fs::path(outDir) / ("frame-" + std::to_string(f)) : fs::path(outDir);
       runner::writeBudgetFrameFiles(dir, budget);
       framesJson.push_back(runner::budgetFrameJson(frame, budget, popping));
-      if (allFrames) strip.push_back(runner::smallKeptMap(budget));
+      if (everyFrame) strip.push_back(runner::smallKeptMap(budget));
       out << "budget: " << frame.scene().name << " frame " << frame.index << ": " << budget.pixelsCut
           << " pixel(s) where a budget cuts a light, largest loss " << budget.largestLoss << "\n";
     }
-    if (allFrames) reports::writeRgb8Png((fs::path(outDir) / "kept-strip.png").string(), reports::stripOf(strip));
+    if (everyFrame) reports::writeRgb8Png((fs::path(outDir) / "kept-strip.png").string(), reports::stripOf(strip));
     const Json document = {{"scene", input.prepared->scene.name},
                            {"width", input.frame.view.width},
                            {"height", input.frame.view.height},

@@ -39,8 +39,9 @@ int runReferenceCommand(const SceneArguments& args, bool ideal, bool toleranceTe
                         std::ostream& out, std::ostream& err);
 
 // SPEC 5.5: DIR/budget.json, reach.png, kept.png, loss.exr, loss.png for the
-// frame; with `allFrames` each frame in DIR/frame-<f>/, the popping score
-// beside each and DIR/kept-strip.png (docs/cli.md).
+// frame; with `allFrames`, or for an animated scene without --frame, each
+// frame in DIR/frame-<f>/, the popping score beside each and
+// DIR/kept-strip.png (docs/cli.md).
 int runBudgetCommand(const SceneArguments& args, bool allFrames, const std::string& outDir, std::ostream& out,
                      std::ostream& err);
 

@@ -124,6 +124,19 @@ TEST_F(BudgetCommand, EveryFrameOfAnAnimatedSceneWithItsPoppingScore) {
   EXPECT_GE(width, 7 * 96);  // seven 96-pixel maps side by side
 }
 
+TEST_F(BudgetCommand, AnAnimatedSceneGivesEveryFrameUnlessOneIsPicked) {
+  // SPEC 5.5: without --frame, every frame of a camera path.
+  ASSERT_EQ(run("limits/popping-64.json", 0, false, false), kExitSuccess) << err_.str();
+  EXPECT_EQ(readJson(dir_ / "budget.json")["frames"].size(), 7u);
+  EXPECT_TRUE(fs::exists(dir_ / "frame-6" / "kept.png"));
+  fs::remove_all(dir_);
+  ASSERT_EQ(run("limits/popping-64.json", 3, true, false), kExitSuccess) << err_.str();
+  const nlohmann::json json = readJson(dir_ / "budget.json");
+  ASSERT_EQ(json["frames"].size(), 1u);
+  EXPECT_EQ(json["frames"][0]["frame"].get<int>(), 3);
+  EXPECT_TRUE(fs::exists(dir_ / "kept.png"));
+}
+
 TEST_F(BudgetCommand, BadInputExitsTwo) {
   EXPECT_EQ(run("limits/popping-64.json", 7, true, false), kExitBadInput);  // frames 0..6
   EXPECT_NE(err_.str().find("--frame 7 is out of range"), std::string::npos) << err_.str();
