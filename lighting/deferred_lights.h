@@ -79,7 +79,7 @@ static_assert(sizeof(GpuDeferredLightBlock) == 80);
 // std140, binding 3 in the light and composite passes: per frame.
 struct GpuDeferredFrameBlock {
   GpuMat4 inverseViewProjection;  // clip (x right, y up, depth 0..1) to camera-relative world
-  GpuIVec4 buffer;                // x: 0 hdr32, 1 hdr16, 2 ldr8 (GLSL: bufferFormat, `buffer` is a keyword)
+  GpuIVec4 buffer;                // x: 0 hdr32, 1 hdr16, 2 ldr8 (GLSL: bufferFormat, `buffer` is a keyword); y: 0, the index the shaders read x at (shaders/deferred_data.glsl)
 };
 static_assert(sizeof(GpuDeferredFrameBlock) == 80);
 

@@ -67,8 +67,12 @@ struct GpuFrameBlock {
   GpuVec4 clusterScreen;    // x: image width, y: image height in pixels
   GpuVec4 clusterForward;   // xyz: the camera's forward axis
   GpuVec4 clusterSlicing;   // x: ClusterGrid::sliceScale, y: sliceBias, z: 1 exponential (log of the depth), 0 linear; w: the near depth
+  // Always zero: the shaders read every uniform that steers a loop or a
+  // branch at this offset from its own, which the shader compiler cannot
+  // fold (shaders/light_data.glsl, opaque()).
+  GpuIVec4 opaqueZero;
 };
-static_assert(sizeof(GpuFrameBlock) == 4544);
+static_assert(sizeof(GpuFrameBlock) == 4560);
 
 // Binding 1: per object.
 struct GpuObjectBlock {

@@ -17,7 +17,7 @@
 layout(set = 2, binding = 0) uniform usamplerBuffer clusterLists;
 
 // The specialised shader knows from its constant; the full shader asks.
-bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts.w != 0; }
+bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts[opaque(3)] != 0; }
 
 // The cluster of the camera-relative point p, by LightClusters::clusterAt's
 // arithmetic in float: the pixel of its clip position (y down from the
@@ -25,7 +25,10 @@ bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts.w != 0
 // `clip` is forward.vert's gl_Position, interpolated (perspective-correct, so
 // it is viewProjection * p up to rounding), not viewProjection * p here:
 // lavapipe (Mesa 22.3) took a fixed 70-180 ms a frame longer when this stage
-// read the matrix (measured; the other drivers did not).
+// read the matrix (measured; the other drivers did not), which fits its
+// per-bind recompiles (docs/vendors.md, "lavapipe recompiles": the matrix's
+// loads change how much inlining removes, and so whether it keeps inlining),
+// measured before the steering uniforms were read at opaque offsets.
 int clusterOf(vec4 clip, vec3 p) {
   vec2 ndc = clip.xy / clip.w;
   vec2 pixel = vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * frameData.clusterScreen.xy;
@@ -33,7 +36,7 @@ int clusterOf(vec4 clip, vec3 p) {
   ivec2 tile = clamp(ivec2(floor(pixel / float(grid.w))), ivec2(0), grid.xy - 1);
   vec4 slicing = frameData.clusterSlicing;
   float depth = dot(p, frameData.clusterForward.xyz);
-  float x = slicing.z != 0.0 ? log(max(depth, slicing.w)) : depth;
+  float x = frameData.clusterSlicing[opaque(2)] != 0.0 ? log(max(depth, slicing.w)) : depth;
   int slice = clamp(int(floor(x * slicing.x + slicing.y)), 0, grid.z - 1);
   return (slice * grid.y + tile.y) * grid.x + tile.x;
 }

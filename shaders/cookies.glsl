@@ -90,12 +90,13 @@ CookieValues cookieValuesAt(vec3 p) {
   CookieValues values;
   for (int s = 0; s < kCookieSlots; ++s) values.slot[s] = 1.0;
   if (!COOKIES) return values;
-  values.slot[0] = textureCookieValue(cookieData.cookies[0], cookieTexture0, p);
-  values.slot[1] = textureCookieValue(cookieData.cookies[1], cookieTexture1, p);
-  values.slot[2] = textureCookieValue(cookieData.cookies[2], cookieTexture2, p);
-  values.slot[3] = textureCookieValue(cookieData.cookies[3], cookieTexture3, p);
-  values.slot[4] = cubeCookieValue(cookieData.cookies[4], cookieCube0, p);
-  values.slot[5] = cubeCookieValue(cookieData.cookies[5], cookieCube1, p);
+  // Each slot's kind steers the lookup: read at an opaque index (light_data.glsl).
+  values.slot[0] = textureCookieValue(cookieData.cookies[opaque(0)], cookieTexture0, p);
+  values.slot[1] = textureCookieValue(cookieData.cookies[opaque(1)], cookieTexture1, p);
+  values.slot[2] = textureCookieValue(cookieData.cookies[opaque(2)], cookieTexture2, p);
+  values.slot[3] = textureCookieValue(cookieData.cookies[opaque(3)], cookieTexture3, p);
+  values.slot[4] = cubeCookieValue(cookieData.cookies[opaque(4)], cookieCube0, p);
+  values.slot[5] = cubeCookieValue(cookieData.cookies[opaque(5)], cookieCube1, p);
   return values;
 }
 

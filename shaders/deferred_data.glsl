@@ -11,14 +11,17 @@
 // Per frame (lighting::GpuDeferredFrameBlock).
 layout(std140, set = 0, binding = 3) uniform DeferredFrameBlock {
   mat4 inverseViewProjection;  // clip (x right, y up, depth 0..1) to camera-relative world
-  ivec4 bufferFormat;          // x: 0 hdr32, 1 hdr16, 2 ldr8 (GpuDeferredFrameBlock::buffer; `buffer` is a GLSL keyword)
+  ivec4 bufferFormat;          // x: 0 hdr32, 1 hdr16, 2 ldr8 (GpuDeferredFrameBlock::buffer; `buffer` is a GLSL keyword); y: 0
 } deferredFrame;
 
 const int kBufferLdr8 = 2;
 
 // The specialised shader knows the buffer from LDR8_BUFFER; the full shader
-// (every constant on) asks the frame.
-bool ldr8Buffer() { return LDR8_BUFFER && deferredFrame.bufferFormat.x == kBufferLdr8; }
+// (every constant on) asks the frame, at an opaque index as light_data.glsl's
+// opaque() reads: bufferFormat.y is 0, and the composite pass has no FrameBlock.
+bool ldr8Buffer() {
+  return LDR8_BUFFER && deferredFrame.bufferFormat[OPAQUE_UNIFORM_READS ? deferredFrame.bufferFormat.y : 0] == kBufferLdr8;
+}
 
 // ldr8 stores exp2(-c) and decodes -log2(max(x, 1/255)): the clamp keeps a
 // fully dark texel (x = 0) finite; it saturates the light sum at log2(255).

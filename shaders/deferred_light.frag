@@ -32,7 +32,8 @@ void main() {
   // The forward pass's BRDF for this one light (SPEC 3.8).
   SurfaceBrdf surface = surfaceBrdf(albedo.rgb, material, N, viewDirection(p));
   vec3 L;
-  vec3 radiance = packedLight(deferredLight.light, p, N, mask, lightTexturesAt(p, N), L);
+  // The light's kind and slots steer packedLight: read at an opaque index (light_data.glsl).
+  vec3 radiance = packedLight(deferredLight.light[opaque(0)], p, N, mask, lightTexturesAt(p, N), L);
   LightSums sums = LightSums(vec3(0.0), vec3(0.0));
   addLight(sums, surface, radiance, L);
   vec3 c = brdfColour(surface, sums);

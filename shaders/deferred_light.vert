@@ -13,7 +13,7 @@ layout(location = 0) in vec4 inPosition;
 layout(location = 0) out vec4 vClip;
 
 void main() {
-  vec4 clip = deferredLight.info.y == 1 ? inPosition : frameData.viewProjection * inPosition;
+  vec4 clip = deferredLight.info[opaque(1)] == 1 ? inPosition : frameData.viewProjection * inPosition;
   vClip = clip;
   gl_Position = clip;
 }

@@ -8,7 +8,7 @@
 
 // One per light draw (lighting::GpuDeferredLightBlock).
 layout(std140, set = 0, binding = 2) uniform DeferredLightBlock {
-  Light light;  // exactly as in FrameBlock
+  Light light[1];  // exactly as in FrameBlock; an array so that it is read at an opaque index (light_data.glsl)
   ivec4 info;   // x: 1 directional / 0 local; y: 1 full-screen volume (positions are clip space)
 } deferredLight;
 

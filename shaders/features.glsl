@@ -37,5 +37,9 @@ layout(constant_id = 12) const bool SHADOW_MAPS = true;
 // loops over its cluster's lights (clusters.glsl) instead of every kept one.
 // The full shader asks FrameBlock.lightCounts.w.
 layout(constant_id = 13) const bool CLUSTERED_LIGHTS = true;
+// A driver probe, on in every shipped pipeline: the uniforms that steer loops
+// and branches are read at an offset the compiler cannot know (light_data.glsl,
+// opaque()); off, at their constant offsets (render_bench --uniform_reads=constant).
+layout(constant_id = 14) const bool OPAQUE_UNIFORM_READS = true;
 
 #endif

@@ -23,23 +23,25 @@ void main() {
   vec3 p = vPosition;
   vec3 N = normalize(vNormal);
   vec4 mask = objectShadowMask(vLightmapUv);
-  SurfaceBrdf surface = surfaceBrdf(objectData.albedo.rgb, objectData.material, N, viewDirection(p));
+  SurfaceBrdf surface = surfaceBrdf(objectData.albedo.rgb, objectMaterial(), N, viewDirection(p));
   LightSums sums = unlitSums(vLightmapUv);
   LightTextures textures = lightTexturesAt(p, N);  // SPEC 3.10 and 3.9, once for every light
   vec3 L;
   // srp keeps directional lights apart and applies them to every object; the
   // legacy profile packs them with the others.
+  // Each count is read once, before its loop: read at an opaque offset
+  // (light_data.glsl), the load is not one a compiler hoists out of the loop.
   if (DIRECTIONAL_LIGHTS && !legacyProfile())
-    for (int i = 0; i < frameData.lightCounts.x; ++i) {
+    for (int i = 0, count = frameData.lightCounts[opaque(0)]; i < count; ++i) {
       vec3 radiance = directionalLight(frameData.directionalLights[i], N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   if (objectListInUse()) {
     // srp: min(count, 8) per pixel; legacy: list positions 0-3 per pixel.
     int perPixel = legacyProfile() ? kLegacyPixelLights : kMaxLightsPerObject;
-    int count = min(objectData.lightList.x, perPixel);
+    int count = min(objectListCount(), perPixel);
     // Mutant: srp's loop runs to count (objectLightIndex wraps past 8).
-    if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectData.lightList.x;
+    if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectListCount();
     for (int k = 0; k < count; ++k) {
       vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
@@ -51,7 +53,7 @@ void main() {
       addLight(sums, surface, radiance, L);
     }
   } else {
-    for (int i = 0; i < frameData.lightCounts.y; ++i) {
+    for (int i = 0, count = frameData.lightCounts[opaque(1)]; i < count; ++i) {
       vec3 radiance = packedLight(frameData.otherLights[i], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }

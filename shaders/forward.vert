@@ -32,8 +32,8 @@ void main() {
   // Affine in the local position, so interpolating it is exact.
   vLightmapUv = inPosition.xz * objectData.lightmapTransform.xy + objectData.lightmapTransform.zw;
   if (legacyProfile()) {
-    int count = min(objectData.lightList.x, kMaxLightsPerObject);
-    if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) count = objectData.lightList.x;
+    int count = min(objectListCount(), kMaxLightsPerObject);
+    if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP) count = objectListCount();
     if (MUTANT == MUTANT_LEGACY_VERTEX_LIGHTS_DROPPED) count = 0;
     // Mutant: rotation * scale * normal, never normalised.
     vec3 vertexNormal = MUTANT == MUTANT_VERTEX_NORMAL_NOT_NORMALISED ? mat3(objectData.model) * inNormal : N;

@@ -28,7 +28,7 @@ void main() {
   outNormal = vec4(N, gl_FragCoord.z);
   // The ambient and baked terms, times the BRDF's diffuse colour (SPEC 3.8;
   // A for Lambert): exactly the forward pass's sums before any light.
-  SurfaceBrdf surface = surfaceBrdf(albedo, objectData.material, N, vec3(0.0));
+  SurfaceBrdf surface = surfaceBrdf(albedo, objectMaterial(), N, vec3(0.0));
   outBase = vec4(surface.diffuse * unlitSums(vLightmapUv).radiance, 1.0);
   outMaterial = objectData.material;
   outMask = objectShadowMask(vLightmapUv);

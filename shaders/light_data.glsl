@@ -27,10 +27,23 @@ layout(std140, set = 0, binding = 0) uniform FrameBlock {
   vec4 clusterScreen;   // xy: the image size in pixels
   vec4 clusterForward;  // xyz: the camera's forward axis
   vec4 clusterSlicing;  // x: slice scale, y: slice bias, z: 1 exponential, 0 linear; w: the near depth
+  ivec4 opaqueZero;     // all zero; see opaque() below
 } frameData;
+
+// `index`, at an offset the shader compiler cannot know: every uniform that
+// steers a loop or a branch is read through it (`lightCounts[opaque(1)]`,
+// `cookies[opaque(0)]`). lavapipe (Mesa 22.3) folds the values of up to four
+// uniforms read at constant offsets into such conditions into the shader and
+// compiles it again with LLVM whenever their buffer is bound anew, keeping no
+// variant: once per frame for the frame's blocks, once per draw for an
+// object's or a deferred light's, tens of milliseconds each (docs/vendors.md,
+// "lavapipe recompiles"). Read at opaque(i), a value is still one uniform
+// load, but not one it inlines. driver.VulkanRecompiles.* holds the shaders
+// to it.
+int opaque(int index) { return OPAQUE_UNIFORM_READS ? index + frameData.opaqueZero.x : index; }
 
 // The specialised shader knows this from its constants; the full shader
 // (every constant on) asks the data, so it draws any scene.
-bool legacyProfile() { return VERTEX_LIGHTS && frameData.lightCounts.z != 0; }
+bool legacyProfile() { return VERTEX_LIGHTS && frameData.lightCounts[opaque(2)] != 0; }
 
 #endif

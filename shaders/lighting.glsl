@@ -169,7 +169,7 @@ struct SurfaceBrdf {
 // normalize(-p); orthographic: the frame's constant opposite of the view
 // direction.
 vec3 viewDirection(vec3 p) {
-  if (frameData.view.w != 0.0) return frameData.view.xyz;
+  if (frameData.view[opaque(3)] != 0.0) return frameData.view.xyz;
   if (MUTANT == MUTANT_VIEW_ABSOLUTE_COORDINATES) {
     // Mutant: camera - p in absolute float32 coordinates. cameraPosition.w
     // is 1, which the compiler cannot know, so (p + c) - c is not folded.

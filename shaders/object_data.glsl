@@ -7,6 +7,7 @@
 
 #include "features.glsl"
 #include "mutants.glsl"
+#include "light_data.glsl"
 
 layout(std140, set = 0, binding = 1) uniform ObjectBlock {
   mat4 model;           // local to camera-relative world
@@ -19,7 +20,15 @@ layout(std140, set = 0, binding = 1) uniform ObjectBlock {
 } objectData;
 
 // The full shader asks the object whether its list is in use.
-bool objectListInUse() { return PER_OBJECT_LISTS && objectData.lightList.w != 0; }
+bool objectListInUse() { return PER_OBJECT_LISTS && objectData.lightList[opaque(3)] != 0; }
+
+// The object's list count (it may exceed 8), and its material with the
+// srp flag (z) that decides the BRDF: both steer the shaders, so read at
+// opaque indices (light_data.glsl).
+int objectListCount() { return objectData.lightList[opaque(0)]; }
+vec4 objectMaterial() {
+  return vec4(objectData.material.xy, objectData.material[opaque(2)], objectData.material.w);
+}
 
 // The list index k of this object (0 <= k < 8).
 int objectLightIndex(int k) {

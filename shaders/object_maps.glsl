@@ -12,7 +12,7 @@ layout(set = 1, binding = 1) uniform sampler2D shadowMaskTexture;
 
 // SPEC 3.5: the object's shadow mask at the fragment, all ones without one.
 vec4 objectShadowMask(vec2 lightmapUv) {
-  if (SHADOW_MASK && objectData.lightList.z != 0) return texture(shadowMaskTexture, lightmapUv);
+  if (SHADOW_MASK && objectData.lightList[opaque(2)] != 0) return texture(shadowMaskTexture, lightmapUv);
   return vec4(1.0);
 }
 
@@ -22,7 +22,7 @@ vec4 objectShadowMask(vec2 lightmapUv) {
 LightSums unlitSums(vec2 lightmapUv) {
   LightSums sums = LightSums(vec3(0.0), vec3(0.0));
   if (AMBIENT) sums.radiance += frameData.ambient.rgb;
-  if (LIGHTMAP && objectData.lightList.y != 0) sums.radiance += texture(lightmapTexture, lightmapUv).rgb;
+  if (LIGHTMAP && objectData.lightList[opaque(1)] != 0) sums.radiance += texture(lightmapTexture, lightmapUv).rgb;
   return sums;
 }
 

@@ -25,6 +25,7 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   // The full shader asks FrameBlock.lightCounts.w (clusters.glsl).
   v[kClusteredLights] = all || f.clusteredLights;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
+  v[kOpaqueUniformReads] = variant.opaqueUniformReads;
   return v;
 }
 

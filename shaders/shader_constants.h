@@ -25,7 +25,8 @@ enum ConstantId : std::uint32_t {
   kCookies = 11,       // some kept light has a cookie (SPEC 3.10)
   kShadowMaps = 12,    // some kept light has a real-time shadow map (SPEC 3.9)
   kClusteredLights = 13,  // Forward+: the fragment loops over its cluster's lights
-  kConstantCount = 14,
+  kOpaqueUniformReads = 14,  // steering uniforms read at opaque offsets (light_data.glsl); off only as a driver probe
+  kConstantCount = 15,
 };
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores

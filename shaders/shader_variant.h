@@ -74,6 +74,12 @@ std::string_view mutantName(Mutant mutant);
 struct ShaderVariant {
   bool specialised = true;  // false: every feature on, whatever the frame uses
   Mutant mutant = Mutant::None;
+  // false (a driver probe, never the model's default: render_bench
+  // --uniform_reads=constant): the uniforms that steer loops and branches
+  // are read at constant offsets, which lavapipe 22.3 inlines and recompiles
+  // for (shaders/light_data.glsl, opaque(); docs/vendors.md). The image is
+  // the same either way.
+  bool opaqueUniformReads = true;
 };
 
 // The rule the light pass draws volumes by under `mutant`: the only

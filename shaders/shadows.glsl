@@ -118,7 +118,7 @@ float cubeShadowValue(Shadow shadow, samplerCubeShadow map, vec3 p, vec3 N) {
 
 // SPEC 3.9: fade = saturate((z - 0.8 S) / (0.2 S)), z the view depth; 0 for S = 0.
 float shadowFadeAt(vec3 p) {
-  float S = shadowData.fade.w;
+  float S = shadowData.fade[opaque(3)];
   if (S <= 0.0 || MUTANT == MUTANT_SHADOW_FADE_IGNORED) return 0.0;
   return clamp((dot(p, shadowData.fade.xyz) - 0.8 * S) / (0.2 * S), 0.0, 1.0);
 }
@@ -130,12 +130,13 @@ ShadowValues shadowValuesAt(vec3 p, vec3 N) {
   for (int s = 0; s < kShadowSlots; ++s) values.slot[s] = 1.0;
   values.fade = 0.0;
   if (!SHADOW_MAPS) return values;
-  values.slot[0] = textureShadowValue(shadowData.shadows[0], shadowMap0, p, N);
-  values.slot[1] = textureShadowValue(shadowData.shadows[1], shadowMap1, p, N);
-  values.slot[2] = textureShadowValue(shadowData.shadows[2], shadowMap2, p, N);
-  values.slot[3] = textureShadowValue(shadowData.shadows[3], shadowMap3, p, N);
-  values.slot[4] = cubeShadowValue(shadowData.shadows[4], shadowCube0, p, N);
-  values.slot[5] = cubeShadowValue(shadowData.shadows[5], shadowCube1, p, N);
+  // Each slot's kind and filter steer the lookup: read at an opaque index (light_data.glsl).
+  values.slot[0] = textureShadowValue(shadowData.shadows[opaque(0)], shadowMap0, p, N);
+  values.slot[1] = textureShadowValue(shadowData.shadows[opaque(1)], shadowMap1, p, N);
+  values.slot[2] = textureShadowValue(shadowData.shadows[opaque(2)], shadowMap2, p, N);
+  values.slot[3] = textureShadowValue(shadowData.shadows[opaque(3)], shadowMap3, p, N);
+  values.slot[4] = cubeShadowValue(shadowData.shadows[opaque(4)], shadowCube0, p, N);
+  values.slot[5] = cubeShadowValue(shadowData.shadows[opaque(5)], shadowCube1, p, N);
   values.fade = shadowFadeAt(p);
   return values;
 }

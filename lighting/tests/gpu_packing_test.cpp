@@ -31,7 +31,8 @@ TEST(GpuPacking, Std140OffsetsOfTheFrameBlock) {
   EXPECT_EQ(offsetof(GpuFrameBlock, clusterScreen), 96u + 68 * 64 + 48);
   EXPECT_EQ(offsetof(GpuFrameBlock, clusterForward), 96u + 68 * 64 + 64);
   EXPECT_EQ(offsetof(GpuFrameBlock, clusterSlicing), 96u + 68 * 64 + 80);
-  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 96);
+  EXPECT_EQ(offsetof(GpuFrameBlock, opaqueZero), 96u + 68 * 64 + 96);
+  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 112);
 }
 
 // Three clusters listing {0, 2}, {}, {1}: headers at texels 0-2, the lists

@@ -117,6 +117,14 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
       }
       (startsWith(a, "--cluster_tile=", value) ? settings.clusterGrid.tileSize : settings.clusterGrid.depthSlices) =
           int(n);
+    } else if (i > 0 && startsWith(a, "--uniform_reads=", value)) {
+      if (value == "opaque") settings.constantUniformReads = false;
+      else if (value == "constant") settings.constantUniformReads = true;
+      else {
+        std::fprintf(stderr, "render_bench: --uniform_reads is opaque or constant, not '%s'\n", std::string(value).c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
     } else if (i > 0 && startsWith(a, "--time_source=", value)) {
       if (value == "auto") settings.timeSource = TimeSource::Calibrated;
       else if (value == "device") settings.timeSource = TimeSource::Device;

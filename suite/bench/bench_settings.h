@@ -43,6 +43,11 @@ struct Settings {
   // --mutant (tests only): every backend draws this deliberately wrong
   // variant (shaders/shader_variant.h), so a test can time a broken mode.
   shaders::Mutant mutant = shaders::Mutant::None;
+  // --uniform_reads=constant (a driver probe): the shaders read the uniforms
+  // that steer loops and branches at constant offsets, which lavapipe 22.3
+  // inlines and recompiles for (docs/vendors.md); opaque, the default, is
+  // the shipped shaders'.
+  bool constantUniformReads = false;
   // --cluster_tile=N, --cluster_slices=N: the clustered mode's grid on
   // the fields and the light curve; the tile curve varies the tile.
   lighting::ClusterGridSpec clusterGrid;

@@ -129,6 +129,7 @@ int runFrameBenchmarks(int argc, char** argv) {
   if (!run->settings.combination->driver.empty())  // a backend with a driver choice (GL): the driver asked for
     run->options.driver = run->settings.driver;
   run->options.variant.mutant = run->settings.mutant;  // None unless a test asks
+  run->options.variant.opaqueUniformReads = !run->settings.constantUniformReads;  // a driver probe when off
   run->flopsPerPixelLight = flopsPerPixelLight();
 
   run->entry = backends::findBuiltBackendEntry(run->settings.backend);
@@ -171,6 +172,9 @@ int runFrameBenchmarks(int argc, char** argv) {
                               "ideal RGB; perceptual: compare_Yee, 100 cd/m2, 45 deg field of view");
   if (run->settings.mutant != shaders::Mutant::None)
     benchmark::AddCustomContext("frame_bench.mutant", std::string(shaders::mutantName(run->settings.mutant)));
+  if (run->settings.constantUniformReads)
+    benchmark::AddCustomContext("frame_bench.uniform_reads",
+                                "constant (a driver probe: steering uniforms at constant offsets, docs/vendors.md)");
   if (run->settings.peakGflops)
     benchmark::AddCustomContext("frame_bench.peak_gflops", std::to_string(*run->settings.peakGflops));
 
