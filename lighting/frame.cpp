@@ -41,6 +41,11 @@ ShaderFeatures featuresOf(const Frame& frame) {
   for (const Object& o : scene.objects) f.specularBrdf |= o.brdf == Brdf::Srp;
   f.cookies = frame.cookies.any();
   f.shadowMaps = frame.shadows.any();
+  f.cookieTextures = int(frame.cookies.textureLights.size());
+  f.cookieCubes = int(frame.cookies.cubeLights.size());
+  f.shadowMapTextures = int(frame.shadows.maps.size());
+  f.shadowMapCubes = int(frame.shadows.cubes.size());
+  for (const ShadowProjection& map : frame.shadows.maps) f.shadowTent |= map.spec.filter == ShadowFilter::Tent3x3;
   return f;
 }
 

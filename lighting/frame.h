@@ -62,6 +62,13 @@ struct ShaderFeatures {
   bool specularBrdf = false;   // some object has the srp BRDF (SPEC 3.8)
   bool cookies = false;        // some kept light has a cookie (SPEC 3.10)
   bool shadowMaps = false;     // some kept light has a real-time shadow map (SPEC 3.9)
+  // The slots in use, counted from the first of each kind (cookie_slots.h,
+  // shadow_slots.h fill them in order): the shaders look up only these.
+  int cookieTextures = 0;      // 2D cookie slots, 0 to kMaxCookieTextures
+  int cookieCubes = 0;         // cube cookie slots, 0 to kMaxCookieCubes
+  int shadowMapTextures = 0;   // 2D shadow-map slots, 0 to kMaxShadowMaps
+  int shadowMapCubes = 0;      // cube shadow-map slots, 0 to kMaxShadowCubes
+  bool shadowTent = false;     // some 2D shadow-map slot filters tent3x3 (SPEC 3.9)
   // Forward+ (a benchmark mode, never the model's): each fragment
   // loops over its cluster's lights (Frame::clusters) instead of every kept one.
   bool clusteredLights = false;

@@ -42,8 +42,8 @@ const int kCookieSpot = 2;
 const int kCookiePoint = 3;
 const int kCookieSlots = 6;
 
-// Every slot's cookie value at one point. A shader looks all of them up once
-// per invocation (cookieValuesAt) and each light reads its slot's
+// Every slot's cookie value at one point. A shader looks each slot in use up
+// once per invocation (cookieValuesAt) and each light reads its slot's
 // (cookieAttenuation), rather than each light sampling: a light cannot pick
 // its sampler by index (GLSL 330), and a chain of the six samplers per light
 // costs every light six samples on a device that runs both sides of a
@@ -90,24 +90,28 @@ CookieValues cookieValuesAt(vec3 p) {
   CookieValues values;
   for (int s = 0; s < kCookieSlots; ++s) values.slot[s] = 1.0;
   if (!COOKIES) return values;
-  // Each slot's kind steers the lookup: read at an opaque index (light_data.glsl).
-  values.slot[0] = textureCookieValue(cookieData.cookies[opaque(0)], cookieTexture0, p);
-  values.slot[1] = textureCookieValue(cookieData.cookies[opaque(1)], cookieTexture1, p);
-  values.slot[2] = textureCookieValue(cookieData.cookies[opaque(2)], cookieTexture2, p);
-  values.slot[3] = textureCookieValue(cookieData.cookies[opaque(3)], cookieTexture3, p);
-  values.slot[4] = cubeCookieValue(cookieData.cookies[opaque(4)], cookieCube0, p);
-  values.slot[5] = cubeCookieValue(cookieData.cookies[opaque(5)], cookieCube1, p);
+  // Only the slots in use (the constants; llvmpipe and lavapipe would run a
+  // branch on the slot's kind for every slot, both sides); each slot's kind
+  // steers the lookup, so it is read at an opaque index (light_data.glsl).
+  if (COOKIE_TEXTURES > 0) values.slot[0] = textureCookieValue(cookieData.cookies[opaque(0)], cookieTexture0, p);
+  if (COOKIE_TEXTURES > 1) values.slot[1] = textureCookieValue(cookieData.cookies[opaque(1)], cookieTexture1, p);
+  if (COOKIE_TEXTURES > 2) values.slot[2] = textureCookieValue(cookieData.cookies[opaque(2)], cookieTexture2, p);
+  if (COOKIE_TEXTURES > 3) values.slot[3] = textureCookieValue(cookieData.cookies[opaque(3)], cookieTexture3, p);
+  if (COOKIE_CUBES > 0) values.slot[4] = cubeCookieValue(cookieData.cookies[opaque(4)], cookieCube0, p);
+  if (COOKIE_CUBES > 1) values.slot[5] = cubeCookieValue(cookieData.cookies[opaque(5)], cookieCube1, p);
   return values;
 }
 
 // SPEC 3.10: the value `light`'s cookie multiplies its attenuation by, from
 // the values looked up at the point being lit; 1 for a light without one
-// (spotDirection.w < 0).
+// (spotDirection.w < 0). Picked by comparing with each constant slot, as
+// shadowMapAttenuation does (shadows.glsl says why).
 float cookieAttenuation(Light light, CookieValues values) {
   if (!COOKIES) return 1.0;
   int slot = int(light.spotDirection.w);
-  if (slot < 0) return 1.0;
-  return values.slot[slot];
+  float value = 1.0;
+  for (int s = 0; s < kCookieSlots; ++s) value = slot == s ? values.slot[s] : value;
+  return value;
 }
 
 #endif

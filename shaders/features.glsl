@@ -41,5 +41,15 @@ layout(constant_id = 13) const bool CLUSTERED_LIGHTS = true;
 // and branches are read at an offset the compiler cannot know (light_data.glsl,
 // opaque()); off, at their constant offsets (render_bench --uniform_reads=constant).
 layout(constant_id = 14) const bool OPAQUE_UNIFORM_READS = true;
+// The cookie and shadow-map slots in use, each kind's first N (the CPU fills
+// them in order): the others are not looked up. The full shader has them all.
+layout(constant_id = 15) const int COOKIE_TEXTURES = 4;
+layout(constant_id = 16) const int COOKIE_CUBES = 2;
+layout(constant_id = 17) const int SHADOW_MAP_TEXTURES = 4;
+layout(constant_id = 18) const int SHADOW_MAP_CUBES = 2;
+// Some 2D shadow-map slot filters tent3x3 (four bilinear compares): without
+// it the tent's code is left out, which llvmpipe and lavapipe would otherwise
+// run beside the single compare of every slot (they run both sides of a branch).
+layout(constant_id = 19) const bool SHADOW_TENT = true;
 
 #endif

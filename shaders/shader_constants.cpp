@@ -1,5 +1,8 @@
 #include "shaders/shader_constants.h"
 
+#include "lighting/cookie_slots.h"
+#include "lighting/shadow_slots.h"
+
 namespace shaders {
 
 ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVariant& variant) {
@@ -26,6 +29,12 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kClusteredLights] = all || f.clusteredLights;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
   v[kOpaqueUniformReads] = variant.opaqueUniformReads;
+  // The full shader looks up every slot; the specialised one those in use.
+  v[kCookieTextures] = all ? lighting::kMaxCookieTextures : f.cookieTextures;
+  v[kCookieCubes] = all ? lighting::kMaxCookieCubes : f.cookieCubes;
+  v[kShadowMapTextures] = all ? lighting::kMaxShadowMaps : f.shadowMapTextures;
+  v[kShadowMapCubes] = all ? lighting::kMaxShadowCubes : f.shadowMapCubes;
+  v[kShadowTent] = all || f.shadowTent;
   return v;
 }
 

@@ -26,8 +26,21 @@ enum ConstantId : std::uint32_t {
   kShadowMaps = 12,    // some kept light has a real-time shadow map (SPEC 3.9)
   kClusteredLights = 13,  // Forward+: the fragment loops over its cluster's lights
   kOpaqueUniformReads = 14,  // steering uniforms read at opaque offsets (light_data.glsl); off only as a driver probe
-  kConstantCount = 15,
+  kCookieTextures = 15,      // 2D cookie slots in use (the first N), cube slots:
+  kCookieCubes = 16,
+  kShadowMapTextures = 17,   // 2D shadow-map slots in use, cube slots:
+  kShadowMapCubes = 18,
+  kShadowTent = 19,          // some 2D shadow-map slot filters tent3x3
+  kConstantCount = 20,
 };
+
+// Whether a constant is an int in the GLSL (the mutant and the slot counts);
+// every other one is a bool. GLSL has no implicit int-to-bool conversion, so
+// the OpenGL backend spells each as its type.
+constexpr bool constantIsInteger(std::uint32_t id) {
+  return id == kMutant || id == kCookieTextures || id == kCookieCubes || id == kShadowMapTextures ||
+         id == kShadowMapCubes;
+}
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores
 // them in 32 bits): what `frame` uses, or everything for the full shader.

@@ -52,10 +52,10 @@ const int kShadowFilterTent = 2;
 const int kShadowSlots = 6;
 const int kShadowSlotBase = 4;  // Light.spotAngles.z: mask channels 0-3, then shadow slots (lighting::kShadowSlotBase)
 
-// Every slot's s at one point (1 where a slot is empty) and SPEC 3.9's fade there.
+// Every slot's shadowAtten at one point (SPEC 3.9: s with the slot's
+// strength and the fade; 1 where a slot is empty).
 struct ShadowValues {
   float slot[6];
-  float fade;
 };
 
 // SPEC 3.9: p' = p + normal_bias N + depth_bias L, L toward the light at p.
@@ -99,7 +99,7 @@ float textureShadowValue(Shadow shadow, sampler2DShadow map, vec3 p, vec3 N) {
   float n = shadow.params.z;
   // Mutant: every lookup half a texel off the texel centres.
   if (MUTANT == MUTANT_SHADOW_TEXEL_CENTRES_SHIFTED) uv += 0.5 / n;
-  if (int(shadow.params.y) == kShadowFilterTent) return tentCompare(map, uv, depth, n);
+  if (SHADOW_TENT && int(shadow.params.y) == kShadowFilterTent) return tentCompare(map, uv, depth, n);
   return compareAt(map, uv, depth);
 }
 
@@ -123,21 +123,30 @@ float shadowFadeAt(vec3 p) {
   return clamp((dot(p, shadowData.fade.xyz) - 0.8 * S) / (0.2 * S), 0.0, 1.0);
 }
 
-// Every slot's value at the camera-relative p with unit normal N; all ones
-// (no fade) without SHADOW_MAPS.
+// SPEC 3.9: shadowAtten = saturate(lerp(1, s, strength) + fade).
+float shadowAttenuation(float s, float strength, float fade) {
+  // Mutant: the strength applied as a power of s.
+  if (MUTANT == MUTANT_SHADOW_STRENGTH_AS_POWER) return clamp(pow(s, strength) + fade, 0.0, 1.0);
+  return clamp(mix(1.0, s, strength) + fade, 0.0, 1.0);
+}
+
+// Every slot's shadowAtten at the camera-relative p with unit normal N; all
+// ones without SHADOW_MAPS. Per fragment, so a light only picks its slot's.
 ShadowValues shadowValuesAt(vec3 p, vec3 N) {
   ShadowValues values;
   for (int s = 0; s < kShadowSlots; ++s) values.slot[s] = 1.0;
-  values.fade = 0.0;
   if (!SHADOW_MAPS) return values;
-  // Each slot's kind and filter steer the lookup: read at an opaque index (light_data.glsl).
-  values.slot[0] = textureShadowValue(shadowData.shadows[opaque(0)], shadowMap0, p, N);
-  values.slot[1] = textureShadowValue(shadowData.shadows[opaque(1)], shadowMap1, p, N);
-  values.slot[2] = textureShadowValue(shadowData.shadows[opaque(2)], shadowMap2, p, N);
-  values.slot[3] = textureShadowValue(shadowData.shadows[opaque(3)], shadowMap3, p, N);
-  values.slot[4] = cubeShadowValue(shadowData.shadows[opaque(4)], shadowCube0, p, N);
-  values.slot[5] = cubeShadowValue(shadowData.shadows[opaque(5)], shadowCube1, p, N);
-  values.fade = shadowFadeAt(p);
+  // Only the slots in use (the constants, as cookies.glsl does); each slot's
+  // kind and filter steer the lookup: read at an opaque index (light_data.glsl).
+  if (SHADOW_MAP_TEXTURES > 0) values.slot[0] = textureShadowValue(shadowData.shadows[opaque(0)], shadowMap0, p, N);
+  if (SHADOW_MAP_TEXTURES > 1) values.slot[1] = textureShadowValue(shadowData.shadows[opaque(1)], shadowMap1, p, N);
+  if (SHADOW_MAP_TEXTURES > 2) values.slot[2] = textureShadowValue(shadowData.shadows[opaque(2)], shadowMap2, p, N);
+  if (SHADOW_MAP_TEXTURES > 3) values.slot[3] = textureShadowValue(shadowData.shadows[opaque(3)], shadowMap3, p, N);
+  if (SHADOW_MAP_CUBES > 0) values.slot[4] = cubeShadowValue(shadowData.shadows[opaque(4)], shadowCube0, p, N);
+  if (SHADOW_MAP_CUBES > 1) values.slot[5] = cubeShadowValue(shadowData.shadows[opaque(5)], shadowCube1, p, N);
+  float fade = shadowFadeAt(p);
+  for (int s = 0; s < kShadowSlots; ++s)
+    values.slot[s] = shadowAttenuation(values.slot[s], shadowData.shadows[s].params.w, fade);
   return values;
 }
 
@@ -145,21 +154,21 @@ ShadowValues shadowValuesAt(vec3 p, vec3 N) {
 ShadowValues unshadowed() {
   ShadowValues values;
   for (int s = 0; s < kShadowSlots; ++s) values.slot[s] = 1.0;
-  values.fade = 0.0;
   return values;
 }
 
-// SPEC 3.9: shadowAtten = saturate(lerp(1, s, strength) + fade) for a light
-// with a shadow slot (spotAngles.z >= kShadowSlotBase), else 1.
+// `light`'s shadowAtten (SPEC 3.9) for a light with a shadow slot
+// (spotAngles.z >= kShadowSlotBase), else 1. The slot's value is picked by
+// comparing with each constant slot, not by indexing the array with the
+// light's slot: a dynamic index into a local array is a per-lane gather from
+// memory on llvmpipe and lavapipe, which cost the 65-light field with shadows
+// as much as the lookups themselves (measured; docs/performance.md).
 float shadowMapAttenuation(Light light, ShadowValues values) {
   if (!SHADOW_MAPS) return 1.0;
   int slot = int(light.spotAngles.z) - kShadowSlotBase;
-  if (slot < 0) return 1.0;
-  float s = values.slot[slot];
-  float strength = shadowData.shadows[slot].params.w;
-  // Mutant: the strength applied as a power of s.
-  if (MUTANT == MUTANT_SHADOW_STRENGTH_AS_POWER) return clamp(pow(s, strength) + values.fade, 0.0, 1.0);
-  return clamp(mix(1.0, s, strength) + values.fade, 0.0, 1.0);
+  float attenuation = 1.0;
+  for (int s = 0; s < kShadowSlots; ++s) attenuation = slot == s ? values.slot[s] : attenuation;
+  return attenuation;
 }
 
 #endif

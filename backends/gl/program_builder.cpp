@@ -14,7 +14,7 @@ std::string specialise(std::string_view source, const shaders::ConstantValues& c
   std::string out(source.substr(0, lineEnd + 1));
   for (std::size_t id = 0; id < constants.size(); ++id) {
     // Booleans stay booleans: GLSL has no implicit int-to-bool conversion.
-    const bool isBool = id != shaders::kMutant;
+    const bool isBool = !shaders::constantIsInteger(std::uint32_t(id));
     const std::string value = isBool ? (constants[id] ? "true" : "false") : std::to_string(constants[id]);
     out += "#define SPIRV_CROSS_CONSTANT_ID_" + std::to_string(id) + " " + value + "\n";
   }
