@@ -12,6 +12,9 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <string>
+
+#include <unistd.h>
 
 namespace lighting {
 namespace {
@@ -244,8 +247,13 @@ TEST(GltfImport, GltfCameraAtItsNode) {
 
 class GltfRefusal : public ::testing::Test {
  protected:
-  fs::path dir = fs::path(testing::TempDir()) / "lightcts-gltf-refusal";
+  // A folder of its own: ctest runs this fixture's tests in parallel
+  // processes, each writing model.gltf and scene.json.
+  fs::path dir = fs::path(testing::TempDir()) /
+                 ("lightcts-gltf-refusal-" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                  "-" + std::to_string(::getpid()));
   void SetUp() override { fs::create_directories(dir); }
+  void TearDown() override { fs::remove_all(dir); }
 
   // Writes `gltf` beside a scene that imports it; the load must fail naming
   // the glTF file and `pointer`.

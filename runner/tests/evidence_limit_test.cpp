@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 namespace runner {
 namespace {
@@ -14,7 +17,11 @@ using Json = nlohmann::ordered_json;
 class EvidenceLimit : public ::testing::Test {
  protected:
   void SetUp() override {
-    out_ = fs::path(::testing::TempDir()) / "lightcts-evidence-limit";
+    // A folder of its own: ctest runs this fixture's tests in parallel
+    // processes, and another checkout's tests may run beside them.
+    out_ = fs::path(::testing::TempDir()) /
+           ("lightcts-evidence-limit-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+            "-" + std::to_string(::getpid()));
     fs::remove_all(out_);
   }
   void TearDown() override { fs::remove_all(out_); }
