@@ -47,6 +47,9 @@ foreach(i RANGE ${last})
   string(JSON device GET "${json}" benchmarks ${i} device_ms)
   string(JSON label ERROR_VARIABLE noLabel GET "${json}" benchmarks ${i} label)
   string(JSON flagged ERROR_VARIABLE notFlagged GET "${json}" benchmarks ${i} device_time_flagged)
+  # The rule, stated again here rather than read from the code: a device
+  # time is plausible when it is at least half the wall time
+  # (kLeastDeviceShareOfWall, suite/bench/time_source.h, derives the margin).
   holds("a >= 0.5 * b" ${device} ${wallMs} plausible)
   if(notFlagged STREQUAL "NOTFOUND")
     if(NOT label MATCHES "^wall time")
