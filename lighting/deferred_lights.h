@@ -35,6 +35,18 @@ constexpr int kGbufferTargetCount = 5;
 
 enum class LightVolumeShape { FullScreen, Icosphere, Pyramid };
 
+// The texture slots one light pass draw looks up: the light's own cookie
+// slot (cookieBlockSlot) and real-time shadow slot (shadowBlockSlot), -1 for
+// none. The backends specialise each light pass pipeline to them
+// (shaders::lightPassConstants), so a light samples its own textures only,
+// not every slot the frame uses.
+struct LightPassSlots {
+  int cookie = -1;
+  int shadow = -1;
+  friend bool operator==(const LightPassSlots&, const LightPassSlots&) = default;
+};
+LightPassSlots lightPassSlots(const Frame& frame, int sceneLight);
+
 // One light pass draw: a triangle list, counter-clockwise seen from outside
 // (so culling FRONT faces keeps the back faces), camera-relative world
 // positions in float (clip-space positions with w = 1 for FullScreen).
@@ -42,6 +54,7 @@ struct LightVolume {
   int light = -1;   // scene light index
   LightVolumeShape shape = LightVolumeShape::FullScreen;
   std::vector<GpuVec4> vertices;  // xyz, w = 1; three per triangle
+  LightPassSlots slots;           // the textures this draw looks up
 };
 
 // Which rule the light pass draws volumes by: the model's, or that of the

@@ -85,6 +85,9 @@ float cubeCookieValue(Cookie cookie, samplerCube image, vec3 p) {
   return textureLod(image, q, 0.0).r;
 }
 
+// Whether slot s is looked up: every slot in use, or a light pass's light's own.
+bool cookieSlotLookedUp(int s) { return LIGHT_COOKIE_SLOT == -1 || LIGHT_COOKIE_SLOT == s; }
+
 // Every slot's value at the camera-relative p; all ones without COOKIES.
 CookieValues cookieValuesAt(vec3 p) {
   CookieValues values;
@@ -93,12 +96,12 @@ CookieValues cookieValuesAt(vec3 p) {
   // Only the slots in use (the constants; llvmpipe and lavapipe would run a
   // branch on the slot's kind for every slot, both sides); each slot's kind
   // steers the lookup, so it is read at an opaque index (light_data.glsl).
-  if (COOKIE_TEXTURES > 0) values.slot[0] = textureCookieValue(cookieData.cookies[opaque(0)], cookieTexture0, p);
-  if (COOKIE_TEXTURES > 1) values.slot[1] = textureCookieValue(cookieData.cookies[opaque(1)], cookieTexture1, p);
-  if (COOKIE_TEXTURES > 2) values.slot[2] = textureCookieValue(cookieData.cookies[opaque(2)], cookieTexture2, p);
-  if (COOKIE_TEXTURES > 3) values.slot[3] = textureCookieValue(cookieData.cookies[opaque(3)], cookieTexture3, p);
-  if (COOKIE_CUBES > 0) values.slot[4] = cubeCookieValue(cookieData.cookies[opaque(4)], cookieCube0, p);
-  if (COOKIE_CUBES > 1) values.slot[5] = cubeCookieValue(cookieData.cookies[opaque(5)], cookieCube1, p);
+  if (COOKIE_TEXTURES > 0 && cookieSlotLookedUp(0)) values.slot[0] = textureCookieValue(cookieData.cookies[opaque(0)], cookieTexture0, p);
+  if (COOKIE_TEXTURES > 1 && cookieSlotLookedUp(1)) values.slot[1] = textureCookieValue(cookieData.cookies[opaque(1)], cookieTexture1, p);
+  if (COOKIE_TEXTURES > 2 && cookieSlotLookedUp(2)) values.slot[2] = textureCookieValue(cookieData.cookies[opaque(2)], cookieTexture2, p);
+  if (COOKIE_TEXTURES > 3 && cookieSlotLookedUp(3)) values.slot[3] = textureCookieValue(cookieData.cookies[opaque(3)], cookieTexture3, p);
+  if (COOKIE_CUBES > 0 && cookieSlotLookedUp(4)) values.slot[4] = cubeCookieValue(cookieData.cookies[opaque(4)], cookieCube0, p);
+  if (COOKIE_CUBES > 1 && cookieSlotLookedUp(5)) values.slot[5] = cubeCookieValue(cookieData.cookies[opaque(5)], cookieCube1, p);
   return values;
 }
 

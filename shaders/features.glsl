@@ -51,5 +51,11 @@ layout(constant_id = 18) const int SHADOW_MAP_CUBES = 2;
 // it the tent's code is left out, which llvmpipe and lavapipe would otherwise
 // run beside the single compare of every slot (they run both sides of a branch).
 layout(constant_id = 19) const bool SHADOW_TENT = true;
+// A deferred light pass draws one light: its pipeline looks up that light's
+// cookie slot and shadow slot alone (-2: the light has none), whatever other
+// slots the frame fills. -1, the default: every slot in use (the forward
+// pass, the full shader).
+layout(constant_id = 20) const int LIGHT_COOKIE_SLOT = -1;
+layout(constant_id = 21) const int LIGHT_SHADOW_SLOT = -1;
 
 #endif

@@ -35,6 +35,16 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kShadowMapTextures] = all ? lighting::kMaxShadowMaps : f.shadowMapTextures;
   v[kShadowMapCubes] = all ? lighting::kMaxShadowCubes : f.shadowMapCubes;
   v[kShadowTent] = all || f.shadowTent;
+  v[kLightCookieSlot] = kEverySlotInUse;
+  v[kLightShadowSlot] = kEverySlotInUse;
+  return v;
+}
+
+ConstantValues lightPassConstants(ConstantValues v, const lighting::LightPassSlots& slots,
+                                  const ShaderVariant& variant) {
+  if (!variant.specialised) return v;
+  v[kLightCookieSlot] = slots.cookie >= 0 ? slots.cookie : kNoSlot;
+  v[kLightShadowSlot] = slots.shadow >= 0 ? slots.shadow : kNoSlot;
   return v;
 }
 

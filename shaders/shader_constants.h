@@ -31,20 +31,29 @@ enum ConstantId : std::uint32_t {
   kShadowMapTextures = 17,   // 2D shadow-map slots in use, cube slots:
   kShadowMapCubes = 18,
   kShadowTent = 19,          // some 2D shadow-map slot filters tent3x3
-  kConstantCount = 20,
+  kLightCookieSlot = 20,     // a deferred light pass: its light's cookie slot alone, or kNoSlot;
+  kLightShadowSlot = 21,     // its shadow slot alone, or kNoSlot; elsewhere kEverySlotInUse
+  kConstantCount = 22,
 };
+constexpr std::int32_t kEverySlotInUse = -1;  // LIGHT_COOKIE_SLOT, LIGHT_SHADOW_SLOT (features.glsl)
+constexpr std::int32_t kNoSlot = -2;
 
-// Whether a constant is an int in the GLSL (the mutant and the slot counts);
+// Whether a constant is an int in the GLSL (the mutant, the slot counts and slots);
 // every other one is a bool. GLSL has no implicit int-to-bool conversion, so
 // the OpenGL backend spells each as its type.
 constexpr bool constantIsInteger(std::uint32_t id) {
   return id == kMutant || id == kCookieTextures || id == kCookieCubes || id == kShadowMapTextures ||
-         id == kShadowMapCubes;
+         id == kShadowMapCubes || id == kLightCookieSlot || id == kLightShadowSlot;
 }
 
 // The value of every constant, in id order (bools as 0/1, as SPIR-V stores
 // them in 32 bits): what `frame` uses, or everything for the full shader.
 using ConstantValues = std::array<std::int32_t, kConstantCount>;
 ConstantValues constantValues(const lighting::ShaderFeatures& features, const ShaderVariant& variant);
+// A deferred light pass draw's constants: the frame's, with its light's
+// texture slots (lighting::LightVolume::slots) as the only ones it looks up.
+// The full shader keeps every slot.
+ConstantValues lightPassConstants(ConstantValues frameConstants, const lighting::LightPassSlots& slots,
+                                  const ShaderVariant& variant);
 
 }  // namespace shaders

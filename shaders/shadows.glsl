@@ -130,6 +130,9 @@ float shadowAttenuation(float s, float strength, float fade) {
   return clamp(mix(1.0, s, strength) + fade, 0.0, 1.0);
 }
 
+// Whether slot s is looked up: every slot in use, or a light pass's light's own.
+bool shadowSlotLookedUp(int s) { return LIGHT_SHADOW_SLOT == -1 || LIGHT_SHADOW_SLOT == s; }
+
 // Every slot's shadowAtten at the camera-relative p with unit normal N; all
 // ones without SHADOW_MAPS. Per fragment, so a light only picks its slot's.
 ShadowValues shadowValuesAt(vec3 p, vec3 N) {
@@ -138,12 +141,12 @@ ShadowValues shadowValuesAt(vec3 p, vec3 N) {
   if (!SHADOW_MAPS) return values;
   // Only the slots in use (the constants, as cookies.glsl does); each slot's
   // kind and filter steer the lookup: read at an opaque index (light_data.glsl).
-  if (SHADOW_MAP_TEXTURES > 0) values.slot[0] = textureShadowValue(shadowData.shadows[opaque(0)], shadowMap0, p, N);
-  if (SHADOW_MAP_TEXTURES > 1) values.slot[1] = textureShadowValue(shadowData.shadows[opaque(1)], shadowMap1, p, N);
-  if (SHADOW_MAP_TEXTURES > 2) values.slot[2] = textureShadowValue(shadowData.shadows[opaque(2)], shadowMap2, p, N);
-  if (SHADOW_MAP_TEXTURES > 3) values.slot[3] = textureShadowValue(shadowData.shadows[opaque(3)], shadowMap3, p, N);
-  if (SHADOW_MAP_CUBES > 0) values.slot[4] = cubeShadowValue(shadowData.shadows[opaque(4)], shadowCube0, p, N);
-  if (SHADOW_MAP_CUBES > 1) values.slot[5] = cubeShadowValue(shadowData.shadows[opaque(5)], shadowCube1, p, N);
+  if (SHADOW_MAP_TEXTURES > 0 && shadowSlotLookedUp(0)) values.slot[0] = textureShadowValue(shadowData.shadows[opaque(0)], shadowMap0, p, N);
+  if (SHADOW_MAP_TEXTURES > 1 && shadowSlotLookedUp(1)) values.slot[1] = textureShadowValue(shadowData.shadows[opaque(1)], shadowMap1, p, N);
+  if (SHADOW_MAP_TEXTURES > 2 && shadowSlotLookedUp(2)) values.slot[2] = textureShadowValue(shadowData.shadows[opaque(2)], shadowMap2, p, N);
+  if (SHADOW_MAP_TEXTURES > 3 && shadowSlotLookedUp(3)) values.slot[3] = textureShadowValue(shadowData.shadows[opaque(3)], shadowMap3, p, N);
+  if (SHADOW_MAP_CUBES > 0 && shadowSlotLookedUp(4)) values.slot[4] = cubeShadowValue(shadowData.shadows[opaque(4)], shadowCube0, p, N);
+  if (SHADOW_MAP_CUBES > 1 && shadowSlotLookedUp(5)) values.slot[5] = cubeShadowValue(shadowData.shadows[opaque(5)], shadowCube1, p, N);
   float fade = shadowFadeAt(p);
   for (int s = 0; s < kShadowSlots; ++s)
     values.slot[s] = shadowAttenuation(values.slot[s], shadowData.shadows[s].params.w, fade);

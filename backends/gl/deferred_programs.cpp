@@ -16,16 +16,26 @@ constexpr const char* kGbufferSamplers[kGbufferColourCount] = {"gbufferAlbedo", 
 
 }  // namespace
 
-DeferredProgramSet DeferredPrograms::programs(const shaders::ConstantValues& constants) {
+DeferredProgramSet DeferredPrograms::programs(const shaders::ConstantValues& constants,
+                                              const std::vector<shaders::ConstantValues>& lightConstants) {
   auto found = programs_.find(constants);
   if (found == programs_.end()) found = programs_.emplace(constants, build(constants)).first;
-  return {found->second.gbuffer.get(), found->second.light.get(), found->second.composite.get()};
+  DeferredProgramSet set{found->second.gbuffer.get(), {}, found->second.composite.get()};
+  for (const shaders::ConstantValues& light : lightConstants) {
+    auto program = lights_.find(light);
+    if (program == lights_.end()) {
+      program = lights_.emplace(light, buildLight(light)).first;
+      gl_.glUseProgram(0);
+      gl_.check("linking a deferred light program");
+    }
+    set.lights.push_back(program->second.get());
+  }
+  return set;
 }
 
 DeferredPrograms::Linked DeferredPrograms::build(const shaders::ConstantValues& constants) const {
   Linked linked;
   linked.gbuffer = buildGbuffer(constants);
-  linked.light = buildLight(constants);
   linked.composite = buildComposite(constants);
   gl_.glUseProgram(0);
   gl_.check("linking the deferred programs");

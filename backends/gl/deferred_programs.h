@@ -1,6 +1,7 @@
 // The deferred path's programs for OpenGL (SPEC 3.7), made like the forward
 // program (program_builder.h), one set per set of constants (the frame's
-// features, with LDR8_BUFFER for the ldr8 light buffer), linked on first use:
+// features, with LDR8_BUFFER for the ldr8 light buffer; a light program per
+// light's texture slots), linked on first use:
 //   G-buffer:  forward.vert + gbuffer.frag; blocks and baked-map samplers
 //              exactly as the forward program binds them;
 //   light:     deferred_light.vert + .frag; FrameBlock (binding 0, for the
@@ -17,6 +18,7 @@
 #include "shaders/shader_constants.h"
 
 #include <map>
+#include <vector>
 
 namespace backends::gl {
 
@@ -28,19 +30,22 @@ constexpr GLint kLightBufferTextureUnit = kFirstGbufferTextureUnit + kGbufferCol
 
 struct DeferredProgramSet {
   GLuint gbuffer = 0;
-  GLuint light = 0;
+  std::vector<GLuint> lights;  // one per light pass draw (lighting::lightVolumes order)
   GLuint composite = 0;
 };
 
 class DeferredPrograms {
  public:
   explicit DeferredPrograms(const GlFunctions& gl) : gl_(gl) {}
-  // The programs for `constants`; throws DriverError with the compiler's log.
-  DeferredProgramSet programs(const shaders::ConstantValues& constants);
+  // The G-buffer and composite programs for the frame's `constants`, and a
+  // light program per entry of `lightConstants` (shaders::lightPassConstants);
+  // throws DriverError with the compiler's log.
+  DeferredProgramSet programs(const shaders::ConstantValues& constants,
+                              const std::vector<shaders::ConstantValues>& lightConstants);
 
  private:
   struct Linked {
-    GlName gbuffer, light, composite;
+    GlName gbuffer, composite;
   };
   Linked build(const shaders::ConstantValues& constants) const;
   GlName buildGbuffer(const shaders::ConstantValues& constants) const;
@@ -49,6 +54,7 @@ class DeferredPrograms {
 
   const GlFunctions& gl_;
   std::map<shaders::ConstantValues, Linked> programs_;
+  std::map<shaders::ConstantValues, GlName> lights_;
 };
 
 }  // namespace backends::gl

@@ -14,8 +14,8 @@ constexpr float kGbufferClear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 
 }  // namespace
 
-DeferredRenderer::DeferredRenderer(const GlFunctions& gl, shaders::Mutant mutant)
-    : gl_(gl), volumeRule_(shaders::volumeRule(mutant)), programs_(gl), targets_(gl) {
+DeferredRenderer::DeferredRenderer(const GlFunctions& gl, const shaders::ShaderVariant& variant)
+    : gl_(gl), variant_(variant), volumeRule_(shaders::volumeRule(variant.mutant)), programs_(gl), targets_(gl) {
   volumeArray_ = makeVertexArray(gl_);
   emptyArray_ = makeVertexArray(gl_);
   volumeVertices_ = makeBuffer(gl_);
@@ -29,6 +29,13 @@ DeferredRenderer::DeferredRenderer(const GlFunctions& gl, shaders::Mutant mutant
   gl_.glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, sizeof(lighting::GpuVec4), nullptr);
   gl_.glBindVertexArray(0);
   gl_.check("creating the deferred renderer's buffers");
+}
+
+DeferredProgramSet DeferredRenderer::programs(const lighting::Frame& frame, const shaders::ConstantValues& constants) {
+  std::vector<shaders::ConstantValues> lights;
+  for (const lighting::LightVolume& volume : lighting::lightVolumes(frame))
+    lights.push_back(shaders::lightPassConstants(constants, volume.slots, variant_));
+  return programs_.programs(constants, lights);
 }
 
 void DeferredRenderer::beginFrame(const lighting::Frame& frame, int width, int height) {
@@ -55,7 +62,7 @@ void DeferredRenderer::beginFrame(const lighting::Frame& frame, int width, int h
 void DeferredRenderer::drawFrame(const DeferredProgramSet& programs, const SceneDraws& scene,
                                  const BakedTextures& baked, GLuint outputFramebuffer) {
   drawGbuffer(programs.gbuffer, scene, baked);
-  drawLights(programs.light, scene);
+  drawLights(programs.lights, scene);
   drawComposite(programs.composite, outputFramebuffer);
   unbindDeferredTextures();
 }
@@ -94,21 +101,22 @@ void DeferredRenderer::drawGbuffer(GLuint program, const SceneDraws& scene, cons
 // back faces behind or on the G-buffer's surface, which a ray through a pixel
 // meets exactly once, also with the camera inside), blended into the light
 // buffer from the blend's identity (lighting::lightBufferState).
-void DeferredRenderer::drawLights(GLuint program, const SceneDraws& scene) {
+void DeferredRenderer::drawLights(const std::vector<GLuint>& programs, const SceneDraws& scene) {
   const lighting::LightBufferState buffer = lighting::lightBufferState(buffer_);
   const float clear[4] = {buffer.clearValue, buffer.clearValue, buffer.clearValue, buffer.clearValue};
   gl_.glBindFramebuffer(GL_FRAMEBUFFER, targets_.lightFramebuffer());
   gl_.glViewport(0, 0, width_, height_);
   gl_.glClearBufferfv(GL_COLOR, 0, clear);
   applyLightBlend(gl_, buffer.blend);
-  gl_.glUseProgram(program);
   gl_.glBindVertexArray(volumeArray_.get());
   scene.bindFrameBlock();
   gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredFrameBlockBinding, frameUniforms_.get(), 0,
                         sizeof(lighting::GpuDeferredFrameBlock));
   bindGbufferTextures();
+  GLuint bound = 0;
   for (std::size_t d = 0; d < draws_.size(); ++d) {
     if (draws_[d].vertexCount == 0) continue;
+    if (programs.at(d) != bound) gl_.glUseProgram(bound = programs[d]);  // the light's own slots
     gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredLightBlockBinding, lightUniforms_.get(),
                           GLintptr(d * lightStride_), sizeof(lighting::GpuDeferredLightBlock));
     applyRasterState(gl_, lighting::lightVolumeRasterState(draws_[d].shape, volumeRule_));

@@ -26,10 +26,12 @@ namespace backends::gl {
 
 class DeferredRenderer {
  public:
-  DeferredRenderer(const GlFunctions& gl, shaders::Mutant mutant);
+  DeferredRenderer(const GlFunctions& gl, const shaders::ShaderVariant& variant);
 
-  // Links the programs for `constants` (preparePipeline, and draw on demand).
-  DeferredProgramSet programs(const shaders::ConstantValues& constants) { return programs_.programs(constants); }
+  // Links the programs for `frame` drawn with the frame's `constants`
+  // (preparePipeline, and draw on demand): a light program per light pass
+  // draw, looking up that light's texture slots alone.
+  DeferredProgramSet programs(const lighting::Frame& frame, const shaders::ConstantValues& constants);
 
   // Everything before the timed draws: the targets, the light volumes and
   // the deferred uniform blocks; leaves the G-buffer bound and cleared.
@@ -47,12 +49,13 @@ class DeferredRenderer {
 
   void uploadVolumes(const lighting::Frame& frame);
   void drawGbuffer(GLuint program, const SceneDraws& scene, const BakedTextures& baked);
-  void drawLights(GLuint program, const SceneDraws& scene);
+  void drawLights(const std::vector<GLuint>& programs, const SceneDraws& scene);
   void drawComposite(GLuint program, GLuint outputFramebuffer);
   void bindGbufferTextures() const;
   void unbindDeferredTextures() const;
 
   const GlFunctions& gl_;
+  shaders::ShaderVariant variant_;
   lighting::VolumeRule volumeRule_;
   DeferredPrograms programs_;
   GbufferTargets targets_;

@@ -56,7 +56,7 @@ class GlBackend final : public Backend {
     shadowMaps_.emplace(gl_, options.variant.mutant);
     sceneDraws_.emplace(gl_);
     clusterLists_.emplace(gl_);
-    deferred_.emplace(gl_, options.variant.mutant);
+    deferred_.emplace(gl_, options.variant);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
     // its counter 0 bits: it then has no clock, and draws are not timed.
     GLint timerBits = 0;
@@ -82,7 +82,7 @@ class GlBackend final : public Backend {
     context_->makeCurrent();
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     if (deferred(frame))
-      deferred_->programs(constants);
+      deferred_->programs(frame, constants);
     else
       programs_->program(constants);
     if (frame.shadows.any()) shadowMaps_->prepareProgram(constants);
@@ -104,7 +104,7 @@ class GlBackend final : public Backend {
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     const bool isDeferred = deferred(frame);
     const GLuint forwardProgram = isDeferred ? 0 : programs_->program(constants);
-    const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(constants) : DeferredProgramSet{};
+    const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(frame, constants) : DeferredProgramSet{};
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     sceneDraws_->update(frame);
     if (!isDeferred) clusterLists_->update(frame);  // the clustered mode's lists, or one zero texel

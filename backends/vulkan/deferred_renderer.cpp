@@ -28,9 +28,11 @@ void DeferredRenderer::choosePipelines(const lighting::Frame& frame,
   gbufferPipeline_ = &pipelines_.gbuffer(constants);
   compositePipeline_ = &pipelines_.composite(constants);
   lightPipelines_.clear();
+  // Each light's pass looks up that light's texture slots alone.
   for (const lighting::LightVolume& volume : volumes)
-    lightPipelines_.push_back(&pipelines_.light(
-        constants, lighting::lightVolumeRasterState(volume.shape, shaders::volumeRule(variant_.mutant)), buffer));
+    lightPipelines_.push_back(
+        &pipelines_.light(shaders::lightPassConstants(constants, volume.slots, variant_),
+                          lighting::lightVolumeRasterState(volume.shape, shaders::volumeRule(variant_.mutant)), buffer));
 }
 
 void DeferredRenderer::prepareFrame(const lighting::Frame& frame) {

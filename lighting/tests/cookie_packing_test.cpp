@@ -4,11 +4,13 @@
 // from the origin, and the slots follow the kept lights.
 #include "lighting/cookie.h"
 #include "lighting/cookie_packing.h"
+#include "lighting/deferred_lights.h"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -108,6 +110,25 @@ TEST(CookiePacking, OnlyKeptLightsTakeSlotsAndTooManyIsSaid) {
   EXPECT_FALSE(none.cookies.any());
   EXPECT_FALSE(none.features.cookies);
   EXPECT_EQ(cookieBlockSlot(none, 0), -1);
+}
+
+// A deferred light pass draw looks up its light's cookie slot alone: the
+// 2D slots are 0-3 and the cube slots 4-5 (shaders/cookies.glsl), so the
+// directional and spot cookies hold 0 and 1 between them and the point
+// light's cube the first cube slot, 4; no light here has a shadow map.
+TEST(CookiePacking, EachLightPassLooksUpItsOwnSlot) {
+  const Frame frame = prepareFrame(prepareScene(farScene()), 0);
+  const std::vector<LightVolume> volumes = lightVolumes(frame);
+  ASSERT_EQ(volumes.size(), 3u);
+  std::vector<int> textureSlots;
+  for (const LightVolume& v : volumes) {
+    EXPECT_EQ(v.slots.shadow, -1);
+    EXPECT_EQ(v.slots, lightPassSlots(frame, v.light));
+    if (v.light == 2) EXPECT_EQ(v.slots.cookie, 4);
+    else textureSlots.push_back(v.slots.cookie);
+  }
+  std::sort(textureSlots.begin(), textureSlots.end());
+  EXPECT_EQ(textureSlots, (std::vector<int>{0, 1}));
 }
 
 }  // namespace

@@ -20,6 +20,24 @@ TEST(ShaderVariant, DefaultIsTheSpecialisedModelWithoutMutant) {
   EXPECT_EQ(mutantName(Mutant::None), "none");
 }
 
+// The forward pass looks up every slot in use (-1, features.glsl); a light
+// pass its light's own slots, -2 for a kind it has none of; the full shader
+// keeps every slot in the light pass too.
+TEST(ShaderVariant, ALightPassLooksUpItsLightsSlotsAlone) {
+  const ShaderVariant specialised;
+  const ConstantValues frame = constantValues(lighting::ShaderFeatures{}, specialised);
+  EXPECT_EQ(frame[kLightCookieSlot], -1);
+  EXPECT_EQ(frame[kLightShadowSlot], -1);
+  const ConstantValues light = lightPassConstants(frame, {3, -1}, specialised);
+  EXPECT_EQ(light[kLightCookieSlot], 3);
+  EXPECT_EQ(light[kLightShadowSlot], -2);
+  for (std::uint32_t id = 0; id < kLightCookieSlot; ++id) EXPECT_EQ(light[id], frame[id]) << id;
+  ShaderVariant full;
+  full.specialised = false;
+  const ConstantValues fullFrame = constantValues(lighting::ShaderFeatures{}, full);
+  EXPECT_EQ(lightPassConstants(fullFrame, {3, 5}, full), fullFrame);
+}
+
 TEST(ShaderVariant, EveryMutantNameRoundTrips) {
   std::set<int> numbers;
   std::set<std::string> names;
