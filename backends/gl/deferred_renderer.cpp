@@ -31,19 +31,21 @@ DeferredRenderer::DeferredRenderer(const GlFunctions& gl, const shaders::ShaderV
   gl_.check("creating the deferred renderer's buffers");
 }
 
-DeferredProgramSet DeferredRenderer::programs(const lighting::Frame& frame, const shaders::ConstantValues& constants) {
+DeferredProgramSet DeferredRenderer::programs(const std::vector<lighting::LightVolume>& volumes,
+                                              const shaders::ConstantValues& constants) {
   std::vector<shaders::ConstantValues> lights;
-  for (const lighting::LightVolume& volume : lighting::lightVolumes(frame))
+  for (const lighting::LightVolume& volume : volumes)
     lights.push_back(shaders::lightPassConstants(constants, volume.slots, variant_));
   return programs_.programs(constants, lights);
 }
 
-void DeferredRenderer::beginFrame(const lighting::Frame& frame, int width, int height) {
+void DeferredRenderer::beginFrame(const lighting::Frame& frame, const std::vector<lighting::LightVolume>& volumes,
+                                  int width, int height) {
   buffer_ = frame.scene().pipeline.deferredBuffer;
   width_ = width;
   height_ = height;
   targets_.ensure(width, height, buffer_);
-  uploadVolumes(frame);
+  uploadVolumes(frame, volumes);
   const lighting::GpuDeferredFrameBlock block = lighting::packDeferredFrame(frame);
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.get());
   gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
@@ -67,8 +69,7 @@ void DeferredRenderer::drawFrame(const DeferredProgramSet& programs, const Scene
   unbindDeferredTextures();
 }
 
-void DeferredRenderer::uploadVolumes(const lighting::Frame& frame) {
-  const std::vector<lighting::LightVolume> volumes = lighting::lightVolumes(frame);
+void DeferredRenderer::uploadVolumes(const lighting::Frame& frame, const std::vector<lighting::LightVolume>& volumes) {
   std::vector<lighting::GpuVec4> vertices;
   std::vector<unsigned char> blocks(std::max<std::size_t>(volumes.size(), 1) * lightStride_);
   draws_.clear();

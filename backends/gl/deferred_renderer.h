@@ -28,14 +28,16 @@ class DeferredRenderer {
  public:
   DeferredRenderer(const GlFunctions& gl, const shaders::ShaderVariant& variant);
 
-  // Links the programs for `frame` drawn with the frame's `constants`
-  // (preparePipeline, and draw on demand): a light program per light pass
-  // draw, looking up that light's texture slots alone.
-  DeferredProgramSet programs(const lighting::Frame& frame, const shaders::ConstantValues& constants);
+  // Links the programs for a frame drawn with its `constants` and light
+  // `volumes` (lighting::lightVolumes; preparePipeline, and draw on demand):
+  // a light program per volume, looking up that light's texture slots alone.
+  DeferredProgramSet programs(const std::vector<lighting::LightVolume>& volumes,
+                              const shaders::ConstantValues& constants);
 
   // Everything before the timed draws: the targets, the light volumes and
   // the deferred uniform blocks; leaves the G-buffer bound and cleared.
-  void beginFrame(const lighting::Frame& frame, int width, int height);
+  void beginFrame(const lighting::Frame& frame, const std::vector<lighting::LightVolume>& volumes, int width,
+                  int height);
   // The three passes, the last into `outputFramebuffer`.
   void drawFrame(const DeferredProgramSet& programs, const SceneDraws& scene, const BakedTextures& baked,
                  GLuint outputFramebuffer);
@@ -47,7 +49,7 @@ class DeferredRenderer {
     GLsizei vertexCount;
   };
 
-  void uploadVolumes(const lighting::Frame& frame);
+  void uploadVolumes(const lighting::Frame& frame, const std::vector<lighting::LightVolume>& volumes);
   void drawGbuffer(GLuint program, const SceneDraws& scene, const BakedTextures& baked);
   void drawLights(const std::vector<GLuint>& programs, const SceneDraws& scene);
   void drawComposite(GLuint program, GLuint outputFramebuffer);

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <functional>
 #include <optional>
+#include <vector>
 
 namespace backends::gl {
 namespace {
@@ -82,7 +83,7 @@ class GlBackend final : public Backend {
     context_->makeCurrent();
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     if (deferred(frame))
-      deferred_->programs(frame, constants);
+      deferred_->programs(lighting::lightVolumes(frame), constants);
     else
       programs_->program(constants);
     if (frame.shadows.any()) shadowMaps_->prepareProgram(constants);
@@ -104,7 +105,10 @@ class GlBackend final : public Backend {
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     const bool isDeferred = deferred(frame);
     const GLuint forwardProgram = isDeferred ? 0 : programs_->program(constants);
-    const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(frame, constants) : DeferredProgramSet{};
+    // The light pass's volumes, each with the slots its program looks up.
+    const std::vector<lighting::LightVolume> volumes =
+        isDeferred ? lighting::lightVolumes(frame) : std::vector<lighting::LightVolume>{};
+    const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(volumes, constants) : DeferredProgramSet{};
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     sceneDraws_->update(frame);
     if (!isDeferred) clusterLists_->update(frame);  // the clustered mode's lists, or one zero texel
@@ -115,7 +119,7 @@ class GlBackend final : public Backend {
     // raster state to clearForward and beginFrame, which set all three.
     shadowMaps_->render(frame, constants, *sceneDraws_);
     if (isDeferred)
-      deferred_->beginFrame(frame, width_, height_);  // binds and clears the G-buffer
+      deferred_->beginFrame(frame, volumes, width_, height_);  // binds and clears the G-buffer
     else
       clearForward();
     // The query encloses the draws. It begins after the clears on purpose:
