@@ -140,16 +140,12 @@ std::vector<std::pair<int, double>> keptLights(const Frame& frame) {
 
 }  // namespace
 
-LightPassSlots lightPassSlots(const Frame& frame, int sceneLight) {
-  return {cookieBlockSlot(frame, sceneLight), shadowBlockSlot(frame, sceneLight)};
-}
-
 LightVolume lightVolume(const Frame& frame, int sceneLight) {
   const Light& light = frame.scene().lights[sceneLight];
   const Vec3& camera = frame.view.camera.position;
   LightVolume volume;
   volume.light = sceneLight;
-  volume.slots = lightPassSlots(frame, sceneLight);
+  volume.slots = {cookieBlockSlot(frame, sceneLight), shadowBlockSlot(frame, sceneLight)};
   std::vector<Triangle> triangles;
   const double outerHalfAngleDeg = light.spotAngleDeg / 2.0;
   if (light.type == LightType::Directional) {

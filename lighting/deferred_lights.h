@@ -43,9 +43,7 @@ enum class LightVolumeShape { FullScreen, Icosphere, Pyramid };
 struct LightPassSlots {
   int cookie = -1;
   int shadow = -1;
-  friend bool operator==(const LightPassSlots&, const LightPassSlots&) = default;
 };
-LightPassSlots lightPassSlots(const Frame& frame, int sceneLight);
 
 // One light pass draw: a triangle list, counter-clockwise seen from outside
 // (so culling FRONT faces keeps the back faces), camera-relative world
