@@ -13,10 +13,7 @@ CookieAddressing cookieAddressing(const lighting::Light& light) {
 
 std::vector<float> cookieTexels(const lighting::Cookie& cookie) {
   std::vector<float> texels;
-  for (const auto& image : cookie.images) {
-    texels.reserve(texels.size() + image->texels.size() * 4);
-    for (float value : image->texels) texels.insert(texels.end(), {value, 0.0f, 0.0f, 1.0f});
-  }
+  for (const auto& image : cookie.images) texels.insert(texels.end(), image->texels.begin(), image->texels.end());
   return texels;
 }
 

@@ -84,13 +84,13 @@ void CookieTextures::upload(const std::shared_ptr<const lighting::PreparedScene>
     gl_.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     // Row j of the image is GL's row j, which t = (j + 0.5) / h addresses:
     // image row 0 is v = 0 (SPEC 3.10), nothing is flipped.
-    const std::size_t faceFloats = std::size_t(w) * std::size_t(h) * 4;
+    const std::size_t faceFloats = std::size_t(w) * std::size_t(h);
     if (cube) {
       for (int face = 0; face < 6; ++face)
-        gl_.glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT,
+        gl_.glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_R32F, w, h, 0, GL_RED, GL_FLOAT,
                          texels.data() + face * faceFloats);
     } else {
-      gl_.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, texels.data());
+      gl_.glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, w, h, 0, GL_RED, GL_FLOAT, texels.data());
     }
     setSingleLevelSampling(gl_, GL_LINEAR, target,
                            addressing == CookieAddressing::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE);

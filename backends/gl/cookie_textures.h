@@ -1,6 +1,6 @@
 // The light cookies of SPEC 3.10 as OpenGL textures (shaders/cookies.glsl):
-// every cookie of a prepared scene uploaded once as RGBA32F with its value
-// in r (backends/cookie_texels.h), one level, LINEAR; 2D cookies repeat
+// every cookie of a prepared scene uploaded once as R32F, its value
+// (backends/cookie_texels.h), one level, LINEAR; 2D cookies repeat
 // (directional) or clamp to edge (spot), cubes are seamless
 // (GL_TEXTURE_CUBE_MAP_SEAMLESS, on for the backend's context). Each frame
 // writes the lighting::GpuCookieBlock and binds the slots' textures to the

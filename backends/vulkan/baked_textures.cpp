@@ -59,17 +59,6 @@ BakedMapDefaults::BakedMapDefaults(const VulkanDevice& device, const vk::raii::D
   writeSet(device.device, *sets_.sets.front(), {&noLightmap_, &nearest_}, {&noShadowMask_, &nearest_});
 }
 
-void requireFilterableMapFormat(const VulkanDevice& device) {
-  const vk::FormatProperties properties = device.physical.getFormatProperties(kSampledMapFormat);
-  const vk::FormatFeatureFlags needed =
-      vk::FormatFeatureFlagBits::eSampledImage | vk::FormatFeatureFlagBits::eSampledImageFilterLinear;
-  if ((properties.optimalTilingFeatures & needed) != needed)
-    throw NotSupportedError(device.info.name +
-                            " cannot sample R32G32B32A32_SFLOAT images with optimal tiling and linear filtering "
-                            "(optimalTilingFeatures lacks SAMPLED_IMAGE or SAMPLED_IMAGE_FILTER_LINEAR); the "
-                            "lightmaps and shadow masks of SPEC 3.5 and 3.6 are sampled bilinearly from such images");
-}
-
 SceneBakedTextures::SceneBakedTextures(const VulkanDevice& device, const BakedMapDefaults& defaults,
                                        const vk::raii::DescriptorSetLayout& layout,
                                        std::shared_ptr<const lighting::PreparedScene> prepared)
@@ -93,7 +82,9 @@ SceneBakedTextures::SceneBakedTextures(const VulkanDevice& device, const BakedMa
   }
   sets_.assign(objectCount, defaults.noMapsSet());
   if (withMaps == 0) return;
-  if (anyTexels) requireFilterableMapFormat(device);
+  if (anyTexels)
+    requireFilterableFormat(device, kSampledMapFormat,
+                            "the lightmaps and shadow masks of SPEC 3.5 and 3.6 are sampled bilinearly from such images");
 
   const auto start = std::chrono::steady_clock::now();
   // One image per non-empty map; every image is made before the uploads

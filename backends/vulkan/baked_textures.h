@@ -47,10 +47,6 @@ class BakedMapDefaults {
   DescriptorSets sets_;  // the one set pointing at the 1x1 defaults
 };
 
-// Throws NotSupportedError, saying why, when the device cannot sample
-// R32G32B32A32_SFLOAT images with optimal tiling and linear filtering.
-void requireFilterableMapFormat(const VulkanDevice& device);
-
 // The maps of one prepared scene's bake, uploaded once (texel (i, j) is row j
 // of its image, as lighting::TexelMap lays it out) and one set per object.
 // Holds the prepared scene and its bake, so the pointers identify them: a

@@ -2,7 +2,6 @@
 
 #include "backends/backend.h"
 #include "backends/cookie_texels.h"
-#include "backends/vulkan/baked_textures.h"
 #include "backends/vulkan/texture_upload.h"
 #include "lighting/cookie_packing.h"
 
@@ -18,7 +17,7 @@ constexpr std::uint32_t kCubeSlots = lighting::kMaxCookieCubes;
 static_assert(kFirstCookieCubeBinding == kFirstCookieTextureBinding + kTextureSlots);
 constexpr std::uint32_t kBindingCount = kFirstCookieCubeBinding + kCubeSlots;  // the block and the slots
 
-constexpr std::array<float, 4> kStandInTexel{1.0f, 0.0f, 0.0f, 1.0f};
+constexpr std::array<float, 1> kStandInTexel{1.0f};  // kCookieFormat: the value alone
 
 void requireSize(const VulkanDevice& device, const lighting::Light& light) {
   const bool cube = cookieAddressing(light) == CookieAddressing::Cube;
@@ -38,8 +37,8 @@ CookieTextures::CookieTextures(const VulkanDevice& device, vk::DescriptorSet set
       repeat_(createSingleLevelSampler(device.device, vk::Filter::eLinear, vk::SamplerAddressMode::eRepeat)),
       clamp_(createSingleLevelSampler(device.device, vk::Filter::eLinear, vk::SamplerAddressMode::eClampToEdge)),
       nearest_(createSingleLevelSampler(device.device, vk::Filter::eNearest, vk::SamplerAddressMode::eClampToEdge)),
-      noTexture_(createSampledMapImage(device, {1, 1})),
-      noCube_(createSampledCubeImage(device, 1)),
+      noTexture_(createSampledMapImage(device, {1, 1}, kCookieFormat)),
+      noCube_(createSampledCubeImage(device, 1, kCookieFormat)),
       block_(device, sizeof(lighting::GpuCookieBlock), vk::BufferUsageFlagBits::eUniformBuffer),
       set_(set) {
   std::vector<float> cube;
@@ -66,15 +65,15 @@ void CookieTextures::upload(const std::shared_ptr<const lighting::PreparedScene>
   bool any = false;
   for (std::size_t l = 0; l < lights.size(); ++l) {
     if (!lights[l].cookie) continue;
-    if (!any) requireFilterableMapFormat(device_);
+    if (!any) requireFilterableFormat(device_, kCookieFormat, "the cookies of SPEC 3.10 are sampled bilinearly");
     any = true;
     requireSize(device_, lights[l]);
     const lighting::Cookie& cookie = *lights[l].cookie;
     if (cookieAddressing(lights[l]) == CookieAddressing::Cube)
-      images[l].emplace(createSampledCubeImage(device_, std::uint32_t(cookieWidth(cookie))));
+      images[l].emplace(createSampledCubeImage(device_, std::uint32_t(cookieWidth(cookie)), kCookieFormat));
     else
-      images[l].emplace(createSampledMapImage(device_, {std::uint32_t(cookieWidth(cookie)),
-                                                        std::uint32_t(cookieHeight(cookie))}));
+      images[l].emplace(createSampledMapImage(
+          device_, {std::uint32_t(cookieWidth(cookie)), std::uint32_t(cookieHeight(cookie))}, kCookieFormat));
     texels[l] = cookieTexels(cookie);
   }
   std::vector<TextureUpload> uploads;

@@ -3,7 +3,7 @@
 // frame's lighting::GpuCookieBlock, bindings 1-4 the 2D slots, 5-6 the cube
 // slots, read by the vertex stage (legacy vertex lights) and the fragment stage.
 //
-// Every cookie of a prepared scene is uploaded once (RGBA32F, value in r,
+// Every cookie of a prepared scene is uploaded once (R32F, its value,
 // backends/cookie_texels.h); each frame writes its block and points the slots
 // at the images of the lights lighting::assignCookieSlots gave them, which
 // can change from frame to frame (popping). Unused slots hold 1x1 stand-ins,

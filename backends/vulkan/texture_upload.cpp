@@ -1,5 +1,7 @@
 #include "backends/vulkan/texture_upload.h"
 
+#include "backends/backend.h"
+
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -9,7 +11,14 @@ namespace backends::vulkan {
 namespace {
 
 constexpr std::uint64_t kNoTimeout = UINT64_MAX;
-constexpr vk::DeviceSize kTexelBytes = 4 * sizeof(float);
+// The bytes of one texel of the formats this file creates.
+vk::DeviceSize texelBytes(vk::Format format) {
+  switch (format) {
+    case kSampledMapFormat: return 4 * sizeof(float);
+    case kCookieFormat: return sizeof(float);
+    default: throw std::logic_error("a texture upload to an image of format " + vk::to_string(format));
+  }
+}
 
 vk::ImageMemoryBarrier2 layoutTransition(const DeviceImage& image, vk::ImageLayout from, vk::ImageLayout to) {
   vk::ImageMemoryBarrier2 barrier{.oldLayout = from,
@@ -34,8 +43,8 @@ vk::ImageMemoryBarrier2 layoutTransition(const DeviceImage& image, vk::ImageLayo
 
 }  // namespace
 
-DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D extent) {
-  return DeviceImage(device, kSampledMapFormat, extent,
+DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D extent, vk::Format format) {
+  return DeviceImage(device, format, extent,
                      vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
                      vk::ImageAspectFlagBits::eColor);
 }
@@ -56,25 +65,37 @@ vk::raii::Sampler createSingleLevelSampler(const vk::raii::Device& device, vk::F
                                                          .unnormalizedCoordinates = VK_FALSE});
 }
 
-DeviceImage createSampledCubeImage(const VulkanDevice& device, std::uint32_t size) {
-  return DeviceImage(device, kSampledMapFormat, {size, size},
+void requireFilterableFormat(const VulkanDevice& device, vk::Format format, const std::string& use) {
+  const vk::FormatProperties properties = device.physical.getFormatProperties(format);
+  const vk::FormatFeatureFlags needed =
+      vk::FormatFeatureFlagBits::eSampledImage | vk::FormatFeatureFlagBits::eSampledImageFilterLinear;
+  if ((properties.optimalTilingFeatures & needed) != needed)
+    throw NotSupportedError(device.info.name + " cannot sample " + vk::to_string(format) +
+                            " images with optimal tiling and linear filtering (optimalTilingFeatures lacks "
+                            "SAMPLED_IMAGE or SAMPLED_IMAGE_FILTER_LINEAR); " + use);
+}
+
+DeviceImage createSampledCubeImage(const VulkanDevice& device, std::uint32_t size, vk::Format format) {
+  return DeviceImage(device, format, {size, size},
                      vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
                      vk::ImageAspectFlagBits::eColor, ImageShape::Cube);
 }
 
 void uploadTextures(const VulkanDevice& device, std::span<const TextureUpload> uploads) {
   if (uploads.empty()) return;
-  // Each image's texels at its own offset; every size is a whole number of
-  // 16-byte texels, so every offset is a multiple of the texel size, as
-  // vkCmdCopyBufferToImage requires.
+  // Each image's texels at its own offset, rounded up to a multiple of its
+  // texel size, as vkCmdCopyBufferToImage requires (the formats mix: an
+  // R32F cookie of an odd texel count may come before an RGBA32F one).
   std::vector<vk::DeviceSize> offsets;
   vk::DeviceSize total = 0;
   for (const TextureUpload& u : uploads) {
     const vk::Extent2D extent = u.image->extent;
-    if (u.texels.size_bytes() != vk::DeviceSize(extent.width) * extent.height * u.image->layers * kTexelBytes)
+    const vk::DeviceSize texel = texelBytes(u.image->format);
+    if (u.texels.size_bytes() != vk::DeviceSize(extent.width) * extent.height * u.image->layers * texel)
       throw std::logic_error("a texture upload of " + std::to_string(u.texels.size()) + " floats for a " +
                              std::to_string(extent.width) + " x " + std::to_string(extent.height) + " x " +
-                             std::to_string(u.image->layers) + " image");
+                             std::to_string(u.image->layers) + " " + vk::to_string(u.image->format) + " image");
+    total = (total + texel - 1) / texel * texel;
     offsets.push_back(total);
     total += u.texels.size_bytes();
   }

@@ -10,27 +10,37 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 
 namespace backends::vulkan {
 
 // RGBA32F, the format of the maps (lighting::TexelMap): four floats a texel.
 constexpr vk::Format kSampledMapFormat = vk::Format::eR32G32B32A32Sfloat;
+// R32F, the format of the cookies (backends/cookie_texels.h): one float a texel.
+constexpr vk::Format kCookieFormat = vk::Format::eR32Sfloat;
 
-// A 2D image to sample (one mip level, optimal tiling) of kSampledMapFormat.
-DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D extent);
+// A 2D image to sample (one mip level, optimal tiling) of `format`, one of the two above.
+DeviceImage createSampledMapImage(const VulkanDevice& device, vk::Extent2D extent,
+                                  vk::Format format = kSampledMapFormat);
+
+// Throws NotSupportedError unless the device samples `format` with optimal
+// tiling and linear filtering; `use` says what needs it.
+void requireFilterableFormat(const VulkanDevice& device, vk::Format format, const std::string& use);
 
 // A sampler of one level read at level 0 (maxLod 0), no anisotropy or
 // compare: `filter` both ways, `address` on every axis.
 vk::raii::Sampler createSingleLevelSampler(const vk::raii::Device& device, vk::Filter filter,
                                            vk::SamplerAddressMode address);
 
-// A cube of kSampledMapFormat to sample, six square faces of `size`.
-DeviceImage createSampledCubeImage(const VulkanDevice& device, std::uint32_t size);
+// A cube of `format` to sample, six square faces of `size`.
+DeviceImage createSampledCubeImage(const VulkanDevice& device, std::uint32_t size,
+                                   vk::Format format = kSampledMapFormat);
 
 struct TextureUpload {
   const DeviceImage* image = nullptr;  // from createSampled*Image, in the undefined layout
   // width * height texels per layer, row by row from row 0, layer after
-  // layer (a cube's faces in its order), four floats each.
+  // layer (a cube's faces in its order), as many floats each as the image's
+  // format has channels.
   std::span<const float> texels;
 };
 
