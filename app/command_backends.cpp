@@ -5,22 +5,29 @@
 #include "backends/backend_combinations.h"
 #include "backends/gl/probe_in_child.h"
 
+#include <algorithm>
 #include <ostream>
 
 namespace app {
 namespace {
 
 // The drivers `lightcts backends` probes on `backend`: those of its
-// combinations (one empty driver for Vulkan), or the one --driver names on a
-// backend that has drivers.
+// combinations ("" for the Vulkan loader's own choice), or the one --driver
+// names: a Vulkan driver of the table on Vulkan, any other name on the GL
+// backends (a Mesa driver).
 std::vector<std::string> driversToProbe(const std::string& backend, const std::string& driver) {
   std::vector<std::string> tableDrivers;
-  for (const backends::BackendCombination& combination : backends::backendCombinations())
-    if (combination.backend == backend) tableDrivers.push_back(combination.driver);
-  const bool hasDrivers = !tableDrivers.empty() && !tableDrivers.front().empty();
-  if (driver.empty()) return hasDrivers ? tableDrivers : std::vector<std::string>{""};
-  if (!hasDrivers) return {};
-  return {driver};
+  bool takesMesaDriver = false, namesVulkanDriver = false;
+  for (const backends::BackendCombination& combination : backends::backendCombinations()) {
+    if (!driver.empty() && !combination.takesMesaDriver() && combination.driver == driver) namesVulkanDriver = true;
+    if (combination.backend != backend) continue;
+    takesMesaDriver = combination.takesMesaDriver();
+    if (std::find(tableDrivers.begin(), tableDrivers.end(), combination.driver) == tableDrivers.end())
+      tableDrivers.push_back(combination.driver);
+  }
+  if (driver.empty()) return tableDrivers;
+  if (takesMesaDriver != namesVulkanDriver) return {driver};
+  return {};
 }
 
 }  // namespace
@@ -32,7 +39,7 @@ int runBackendsCommand(const std::string& driver, std::ostream& out, std::ostrea
     bool found = false;
     for (const std::string& name : backends::specBackendNames()) {
       const std::vector<std::string> drivers = driversToProbe(name, driver);
-      if (drivers.empty()) continue;  // --driver: a backend without drivers (Vulkan)
+      if (drivers.empty()) continue;  // --driver names a driver of the other API
       const backends::BackendEntry* entry = backends::findBuiltBackendEntry(name);
       if (!entry) {
         out << name << ": not built (NotSupported)\n";

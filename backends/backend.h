@@ -45,11 +45,18 @@ struct DeviceInfo {
   // (Vulkan's subTexelPrecisionBits); OpenGL has no query, so 4, the Vulkan
   // minimum SPEC 7 assumes. The tolerance of every filtered lookup uses it.
   int subTexelPrecisionBits = 4;
+  // The fractional bits a vertex's framebuffer x and y keep (Vulkan's
+  // subPixelPrecisionBits, OpenGL's GL_SUBPIXEL_BITS; at least 4 on both):
+  // the sub-pixel term of every tolerance uses it.
+  int subPixelPrecisionBits = 4;
 };
 
 struct BackendOptions {
   std::string device;  // --device: index or name substring; empty for the default
-  std::string driver;  // --driver (GL backends): a Mesa Gallium driver name, "" for llvmpipe (gl/mesa_driver.cpp)
+  // --driver: on the GL backends a Mesa Gallium driver name, "" for llvmpipe
+  // (gl/mesa_driver.cpp); on Vulkan a named driver (vulkan/vulkan_drivers.h),
+  // "" for whatever the loader finds.
+  std::string driver;
   shaders::ShaderVariant variant;
   // Enable the API's validation (VK_LAYER_KHRONOS_validation) and turn any
   // message into a DriverError. On in debug builds and when the environment

@@ -1,4 +1,4 @@
-// The five backend and driver combinations the suite runs, from the one table
+// The backend and driver combinations the suite runs, from the one table
 // in backend_combinations.def (which CMake reads too, for the ctest labels).
 // `suffix` ends SPEC 10's test names and is each combination's ctest label.
 #pragma once
@@ -10,9 +10,13 @@
 namespace backends {
 
 struct BackendCombination {
-  std::string suffix;   // vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe
+  std::string suffix;   // vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe, vulkan-swiftshader
   std::string backend;  // SPEC 8 --backend: vulkan | gl-egl | gl-osmesa
-  std::string driver;   // --driver: "" (the backend's default), llvmpipe or softpipe
+  std::string driver;   // --driver: "" (the backend's default), llvmpipe, softpipe or swiftshader
+
+  // A GL backend, whose --driver is any Mesa Gallium driver; Vulkan's names
+  // one of the drivers the Vulkan backend knows (vulkan/vulkan_drivers.h).
+  bool takesMesaDriver() const { return backend != "vulkan"; }
 
   // softpipe renders about 150 times slower than llvmpipe: benchmarks and
   // long tests scale down there.

@@ -172,6 +172,7 @@ std::string referenceCacheKey(const std::string& sceneDigest, int frame, const r
   w.boolean(options.ideal);
   w.boolean(options.bakedLightsRealtime);
   w.f64(options.filterWeightPrecision);
+  w.i32(options.subPixelPrecisionBits);
   w.boolean(options.keepShadowIntervals);
   w.boolean(options.valueOnly);  // no tolerance in it
   return baking::toHex(baking::sha256(w.bytes().data(), w.bytes().size()));

@@ -82,17 +82,19 @@ const lighting::Frame& SceneReferences::frame(int index) {
   return it->second;
 }
 
-const reference::ReferenceImages& SceneReferences::reference(int index, int subTexelBits) {
+const reference::ReferenceImages& SceneReferences::reference(int index, int subTexelBits, int subPixelBits) {
   // A device that reports fewer bits than the minimum is held to the minimum
   // (SPEC 7: "2^-4 ... unless the device reports more"). A scene without a
   // filtered texture has one reference whatever the bits: the minimum's.
   const bool filtered = reference::readsFilteredTextures(*prepared_);
   const int bits = filtered ? std::max(subTexelBits, kMinimumSubTexelBits) : kMinimumSubTexelBits;
-  const std::pair<int, int> key{index, bits};
+  const int snapBits = std::max(subPixelBits, reference::tolerance::kMinimumSubPixelBits);
+  const std::tuple<int, int, int> key{index, bits, snapBits};
   auto it = references_.find(key);
   if (it == references_.end()) {
     reference::ReferenceOptions options = referenceOptionsFor(prepared_->scene);
     options.filterWeightPrecision = std::ldexp(1.0, -bits);
+    options.subPixelPrecisionBits = snapBits;
     it = references_.emplace(key, render(index, options)).first;
   }
   return it->second;
@@ -143,7 +145,9 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
   double worstTightness = -1;
   bool allPass = true;
   for (int f = first; f <= last; ++f) {
-    const reference::ReferenceImages& ref = references.reference(f, backend.device().subTexelPrecisionBits);
+    const backends::DeviceInfo device = backend.device();
+    const reference::ReferenceImages& ref =
+        references.reference(f, device.subTexelPrecisionBits, device.subPixelPrecisionBits);
     lighting::Frame frame = cpuMutantFrame(references.frame(f), options.mutant);
     if (options.clustered) lighting::useLightClusters(frame, *options.clustered);
     if (f == first) timed(check.timings.pipeline, [&] { backend.preparePipeline(frame); });

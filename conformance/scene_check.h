@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace conformance {
@@ -46,10 +47,12 @@ class SceneReferences {
                            std::optional<ReferenceCaching> caching = std::nullopt);
   const std::shared_ptr<const lighting::PreparedScene>& prepared() const { return prepared_; }
   const lighting::Frame& frame(int index);
-  // With referenceOptionsFor(scene) and SPEC 7's filter weights exact to
-  // 2^-subTexelBits (the device's DeviceInfo::subTexelPrecisionBits; 4 is
-  // the Vulkan minimum and `lightcts reference`'s).
-  const reference::ReferenceImages& reference(int frame, int subTexelBits = kMinimumSubTexelBits);
+  // With referenceOptionsFor(scene), SPEC 7's filter weights exact to
+  // 2^-subTexelBits (the device's DeviceInfo::subTexelPrecisionBits) and
+  // vertices snapped to 2^-subPixelBits (DeviceInfo::subPixelPrecisionBits);
+  // 4 is the Vulkan minimum of both and `lightcts reference`'s.
+  const reference::ReferenceImages& reference(int frame, int subTexelBits = kMinimumSubTexelBits,
+                                              int subPixelBits = reference::tolerance::kMinimumSubPixelBits);
   static constexpr int kMinimumSubTexelBits = 4;
   // SPEC 6 --ideal, for the popping score; it keeps the lightmaps whatever
   // `expect.against` says, so the baked part cancels and only budgets remain.
@@ -71,7 +74,7 @@ class SceneReferences {
   std::optional<ReferenceCaching> caching_;
   std::unique_ptr<reference::ReferenceRenderer> renderer_;
   std::map<int, lighting::Frame> frames_;
-  std::map<std::pair<int, int>, reference::ReferenceImages> references_;  // by frame and sub-texel bits
+  std::map<std::tuple<int, int, int>, reference::ReferenceImages> references_;  // by frame, sub-texel and sub-pixel bits
   std::map<int, reference::ReferenceImages> ideals_;
   double referenceMs_ = 0;
   int cacheHits_ = 0;

@@ -26,6 +26,13 @@ Ray CameraView::rayThroughNdc(double ndcX, double ndcY) const {
 
 double CameraView::viewDepth(const Vec3& p) const { return glm::dot(p - camera.position, forward); }
 
+double CameraView::pixelSizeAt(const Vec3& p) const {
+  const double halfHeight = camera.projection == Projection::Perspective
+                                ? viewDepth(p) * std::tan(camera.fovYDeg * std::numbers::pi / 360.0)
+                                : camera.orthoHeight / 2;
+  return 2.0 * halfHeight / double(height);
+}
+
 std::array<FrustumPlane, 6> CameraView::frustumPlanes() const {
   const Vec3& pos = camera.position;
   auto through = [](const Vec3& n, const Vec3& point) { return FrustumPlane{n, -glm::dot(n, point)}; };

@@ -34,6 +34,8 @@ struct CameraView {
   Ray rayThroughNdc(double ndcX, double ndcY) const;
   // Distance in front of the camera along the view axis.
   double viewDepth(const Vec3& p) const;
+  // The side of one pixel, in world units, across the view axis at p's view depth.
+  double pixelSizeAt(const Vec3& p) const;
   std::array<FrustumPlane, 6> frustumPlanes() const;
   // World-minus-camera-position to clip space (x right, y up in NDC, depth 0..1).
   // Translation is left out on purpose: backends upload positions relative to

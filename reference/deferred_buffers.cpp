@@ -62,7 +62,7 @@ double ldr8DecodeBound(double lightSum, int contributing, double sumBound) {
   return bound + tol::kLdr8DecodeAbsError;
 }
 
-double reconstructionPositionError(const CameraView& view, const Vec3& p) {
+double reconstructionPositionError(const CameraView& view, const Vec3& p, double vertexSnap) {
   const double u = tol::kUnitRoundoff;
   const Camera& c = view.camera;
   const Vec3 offset = p - c.position;
@@ -81,7 +81,15 @@ double reconstructionPositionError(const CameraView& view, const Vec3& p) {
   const double halfExtent = halfHeight * std::max(1.0, view.aspect());
   const double fromNdc = tol::kReconstructionNdcSteps * u * std::numbers::sqrt2 * halfExtent;
   const double fromMatrix = tol::kReconstructionMatrixSteps * u * distance;
-  return fromDepth + fromNdc + fromMatrix;
+  // Snapping: the G-buffer pass stores the depth its snapped surface
+  // triangle has at the pixel centre, the depth of the surface point S(a)
+  // seen through a point a up to vertexSnap pixels away on each axis
+  // (tolerance_model.h); the light pass rebuilds the point on the centre's
+  // own ray (gl_FragCoord, shaders/deferred_light.frag) at that depth: S(a)
+  // moved across the view axis by |a - centre| pixels at that depth. S(a) is
+  // a point the sub-pixel term already admits; the move is a position error.
+  const double fromSnapping = vertexSnap * std::numbers::sqrt2 * view.pixelSizeAt(p);
+  return fromDepth + fromNdc + fromMatrix + fromSnapping;
 }
 
 }  // namespace reference

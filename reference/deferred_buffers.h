@@ -27,7 +27,10 @@ double ldr8DecodeBound(double lightSum, int contributing, double sumBound);
 
 // How far the light pass's position, reconstructed from the stored window
 // depth and the pixel's NDC through the float32 inverse view-projection, may
-// be from the rasterised surface point p (world units).
-double reconstructionPositionError(const lighting::CameraView& view, const lighting::Vec3& p);
+// be from a surface point the sub-pixel term admits (world units).
+// `vertexSnap`: how far a vertex may snap (tolerance::vertexSnapPx); the
+// G-buffer's depth comes from a snapped triangle, the light pass's ray from
+// the pixel centre.
+double reconstructionPositionError(const lighting::CameraView& view, const lighting::Vec3& p, double vertexSnap);
 
 }  // namespace reference

@@ -195,7 +195,8 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double q = distSqr * light.invRangeSq;
     const double g = saturate(1.0 - q * q);
     const double rangeAtt = g * g;
-    const double s = saturate(glm::dot(light.spotDirection, L) * light.spot.a + light.spot.b);
+    const double sRaw = glm::dot(light.spotDirection, L) * light.spot.a + light.spot.b;
+    const double s = saturate(sRaw);
     const double spotAtt = s * s;
     const double falloff = shadowMask * rangeAtt / distSqr;
     Vec3 term = light.finalColor * (nl * spotAtt * falloff);
@@ -210,10 +211,29 @@ void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, c
     const double directionError = std::min(1.0, tol::kUnitDotAbsError + rayError / distance);
     const double distSqrRelError = tol::kRoundingStepsPerLightTerm * u + std::min(1.0, 2.0 * rayError / distance);
     const double baseMagnitude = shadowMask * rangeAtt / distSqr;
+    // Each product below is one factor's error times the other factors. A
+    // factor at its kink (nl = 0 on a surface the light lies in, rangeAtt = 0
+    // just past the range, spotAtt = 0 just outside the cone) is 0 in double
+    // and may be above 0 where float32 and snapping put the point, so the
+    // product of two such errors is all the error there is: the factors that
+    // multiply an error are taken at the high end of what they may be over
+    // the arithmetic's error and the snapped point (each is monotone in its
+    // input).
+    const double moved = where.snapMove / distance;
+    const double directionHigh = std::min(1.0, directionError + moved);
+    const double distSqrRelHigh = std::min(1.0, distSqrRelError + 2.0 * moved);
+    const double qLow = q * (1.0 - distSqrRelHigh);
+    const double gHigh = saturate(1.0 - qLow * qLow);
+    const double sHigh = saturate(sRaw + std::abs(light.spot.a) * directionHigh);
+    const double nlHigh = std::min(1.0, nl + directionHigh);
+    const double spotHigh = sHigh * sHigh;
+    // The shader clamps distSqr at kMinDistanceSquared, so its low end does too.
+    const double distSqrLow = std::max(distSqr * (1.0 - distSqrRelHigh), kMinDistanceSquared);
+    const double baseHigh = shadowMask * gHigh * gHigh / distSqrLow;
     const double fromChain = nl * spotAtt * baseMagnitude * distSqrRelError;
-    const double fromNdotL = spotAtt * baseMagnitude * directionError;
-    const double fromSpot = nl * baseMagnitude * 2.0 * s * std::abs(light.spot.a) * directionError;
-    const double fromRange = nl * spotAtt * shadowMask / distSqr * 4.0 * g * q * q * distSqrRelError;
+    const double fromNdotL = spotHigh * baseHigh * directionError;
+    const double fromSpot = nlHigh * baseHigh * 2.0 * sHigh * std::abs(light.spot.a) * directionError;
+    const double fromRange = nlHigh * spotHigh * shadowMask / distSqr * 4.0 * gHigh * q * q * distSqrRelError;
     // The mask's filtering error acts on the unmasked term.
     const double fromMask = nl * spotAtt * rangeAtt / distSqr * shadowMaskError;
     Vec3 termBound = light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +

@@ -58,6 +58,10 @@ struct PositionContext {
   // Deferred path: the light pass reconstructs the position from depth, off
   // by up to this much more (world units; deferred_buffers.h).
   double reconstructionError = 0;
+  // How far vertex snapping may move the surface point the pixel centre sees
+  // (world units, along the surface; tolerance_model.h): the factors that
+  // multiply an arithmetic error are taken at their highest over it too.
+  double snapMove = 0;
 };
 
 // The shadow mask at a point (SPEC 3.5): the object's mask sampled at the

@@ -79,6 +79,7 @@ struct FrameShading {
   std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
   std::vector<Vec3> vertexBound;
   double filterWeightPrecision;  // ReferenceOptions::filterWeightPrecision
+  double vertexSnap;             // tolerance::vertexSnapPx of ReferenceOptions::subPixelPrecisionBits
 
   FrameShading(const Frame& f, const WorldTriangles& w, const Bvh& b, const ReferenceOptions& options,
                std::vector<std::unique_ptr<ReferenceShadowMap>> maps)
@@ -91,7 +92,8 @@ struct FrameShading {
         evaluator(f.scene(), f.scene().pipeline.profile,
                   options.ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size()),
                   f.prepared->shadowMask.channelOfLight, options.filterWeightPrecision, &realtimeShadows),
-        filterWeightPrecision(options.filterWeightPrecision) {
+        filterWeightPrecision(options.filterWeightPrecision),
+        vertexSnap(tol::vertexSnapPx(options.subPixelPrecisionBits)) {
     const auto& objects = f.prepared->objects;
     for (int o = 0; o < int(objects.size()); ++o) {
       lights.push_back(options.ideal ? f.idealLightsForObject() : f.lightsForObject(o));
@@ -208,7 +210,21 @@ struct FrameShading {
     const Scene& scene = frame.scene();
     const bool deferred = scene.pipeline.path == RenderPath::Deferred;
     PositionContext where = contexts[tri.object];
-    if (deferred) where.reconstructionError = reconstructionPositionError(frame.view, p);
+    // The square of half-side vertexSnap pixels (tolerance_model.h) on the
+    // surface: its diagonal across the view axis, stretched by the surface's
+    // slope to the ray.
+    const Vec3 faceNormal = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+    const Vec3 toPoint = p - frame.view.camera.position;
+    const Vec3 rayDirection = frame.view.camera.projection == Projection::Perspective && glm::length(toPoint) > 0
+                                  ? glm::normalize(toPoint)
+                                  : frame.view.forward;
+    const double facing = glm::length(faceNormal) > 0
+                              ? std::abs(glm::dot(rayDirection, glm::normalize(faceNormal)))
+                              : 1.0;
+    where.snapMove = std::numbers::sqrt2 * vertexSnap * frame.view.pixelSizeAt(p) / std::max(facing, 1e-3);
+    if (deferred)
+      where.reconstructionError =
+          reconstructionPositionError(frame.view, p, vertexSnap);
     const MaterialBrdf& brdf = materials[tri.object];
     std::optional<LobeAtPoint> lobe;
     if (brdf.lobe) lobe = lobeAt(p, where, scene.objects[tri.object].smoothness);
@@ -319,14 +335,14 @@ bool ReferenceImages::shadowAmbiguityExceedsCap() const {
   return double(ambiguousShadowPixels) > tol::kMostAmbiguousShadowFraction * double(shadowedPixels);
 }
 
-std::vector<std::unique_ptr<ReferenceShadowMap>> ReferenceRenderer::shadowMaps(const Frame& frame,
-                                                                               int threads) const {
+std::vector<std::unique_ptr<ReferenceShadowMap>> ReferenceRenderer::shadowMaps(const Frame& frame, int threads,
+                                                                               int subPixelBits) const {
   const Scene& scene = frame.scene();
   std::vector<std::unique_ptr<ReferenceShadowMap>> maps(scene.lights.size());
   for (int l = 0; l < int(scene.lights.size()); ++l) {
     if (!scene.lights[l].shadowMap) continue;
     maps[l] = std::make_unique<ReferenceShadowMap>(shadowProjection(scene, l), bvh_, frame.view.camera.position,
-                                                   threads);
+                                                   threads, subPixelBits);
   }
   return maps;
 }
@@ -352,7 +368,9 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
   // `--ideal` traces visibility instead of reading maps (SPEC 3.9).
   const FrameShading shading(frame, world_, bvh_, options,
                              options.ideal ? std::vector<std::unique_ptr<ReferenceShadowMap>>{}
-                                           : shadowMaps(frame, options.threads));
+                                           : shadowMaps(frame, options.threads, options.subPixelPrecisionBits));
+  const double snap = tol::vertexSnapPx(options.subPixelPrecisionBits);
+  const double edgeDistance = tol::edgeDistancePx(options.subPixelPrecisionBits);
 
   // Pass 1: what each pixel centre sees; pass 2 needs the neighbours' answers
   // to find pixels near a change of surface.
@@ -385,7 +403,7 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
       const SurfaceKey key = keys[k];
       bool compared = true;
 
-      // Near a change of surface? Probe a ring of kEdgeDistancePx only where a
+      // Near a change of surface? Probe a ring of edgeDistancePx only where a
       // neighbour sees something else; elsewhere no edge can be that close
       // short of a feature thinner than a pixel.
       bool neighbourDiffers = false;
@@ -398,8 +416,8 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
       if (neighbourDiffers) {
         for (int p = 0; p < kEdgeProbes && compared; ++p) {
           const double angle = 2.0 * std::numbers::pi * p / kEdgeProbes;
-          const Ray probe = frame.view.rayThroughPixel(cx + tol::kEdgeDistancePx * std::cos(angle),
-                                                       cy + tol::kEdgeDistancePx * std::sin(angle));
+          const Ray probe = frame.view.rayThroughPixel(cx + edgeDistance * std::cos(angle),
+                                                       cy + edgeDistance * std::sin(angle));
           if (!(shading.keyOf(shading.trace(probe)) == key)) compared = false;
         }
       }
@@ -419,11 +437,12 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         shadowSpan = centre.widestShadowSpan;
         shadowLo = centre.widestShadowLo;
         shadowHi = centre.widestShadowHi;
-        // Sub-pixel shifts: the largest change of the shaded value.
-        const double shifts[4][2] = {{tol::kSubpixelShiftPx, 0}, {-tol::kSubpixelShiftPx, 0},
-                                     {0, tol::kSubpixelShiftPx}, {0, -tol::kSubpixelShiftPx}};
-        for (const auto& s : shifts) {
-          const auto shiftedHit = shading.trace(frame.view.rayThroughPixel(cx + s[0], cy + s[1]));
+        // Sub-pixel snapping (tolerance_model.h): the larger change of the
+        // two shifts along x plus the larger of the two along y.
+        const double shifts[4][2] = {{snap, 0}, {-snap, 0}, {0, snap}, {0, -snap}};
+        Vec3 axisChange[2] = {Vec3(0.0), Vec3(0.0)};
+        for (int a = 0; a < 4; ++a) {
+          const auto shiftedHit = shading.trace(frame.view.rayThroughPixel(cx + shifts[a][0], cy + shifts[a][1]));
           if (!(shading.keyOf(shiftedHit) == key)) {
             compared = false;
             continue;
@@ -431,9 +450,10 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
           if (options.valueOnly) continue;
           const Shaded shifted = shading.shade(*shiftedHit);
           rowEvaluations += shifted.evaluations;
-          shiftChange = glm::max(shiftChange, glm::abs(shifted.value - value));
+          axisChange[a / 2] = glm::max(axisChange[a / 2], glm::abs(shifted.value - value));
           interpolation = glm::max(interpolation, shifted.interpolation);
         }
+        shiftChange = axisChange[0] + axisChange[1];
       }
       const Vec3 tolerance = options.valueOnly ? Vec3(0.0) : tol::pixelTolerance(value, bound, shiftChange, interpolation);
       if (options.keepExactValues) out.exactValue[k] = value;

@@ -38,6 +38,10 @@ struct ReferenceOptions {
   // device's sub-texel precision; 2^-4, the Vulkan minimum, when unknown):
   // the filtering term of the lightmaps, shadow masks and cookies.
   double filterWeightPrecision = tolerance::kFilterWeightPrecision;
+  // The device's sub-pixel bits (subPixelPrecisionBits; the minimum 4 when
+  // unknown): how far a vertex may snap, for the sub-pixel term, the edge
+  // mask and the shadow maps' texels (tolerance::vertexSnapPx).
+  int subPixelPrecisionBits = tolerance::kMinimumSubPixelBits;
   // Also return ReferenceImages::shadowInterval (SPEC 3.9 evidence).
   bool keepShadowIntervals = false;
   // The value and its mask only, no tolerance (left 0): the benchmarks'
@@ -101,8 +105,10 @@ class ReferenceRenderer {
   std::optional<VisibleSurface> visibleSurface(const lighting::Frame& frame, int x, int y) const;
   std::size_t triangleCount() const { return world_.triangles.size(); }
   // SPEC 3.9: the reference's shadow maps of `frame`, one per scene light
-  // with a shadow map (null for the others), as render() builds them.
-  std::vector<std::unique_ptr<ReferenceShadowMap>> shadowMaps(const lighting::Frame& frame, int threads = 0) const;
+  // with a shadow map (null for the others), as render() builds them for a
+  // device with `subPixelBits` (ReferenceOptions::subPixelPrecisionBits).
+  std::vector<std::unique_ptr<ReferenceShadowMap>> shadowMaps(
+      const lighting::Frame& frame, int threads = 0, int subPixelBits = tolerance::kMinimumSubPixelBits) const;
 
  private:
   std::shared_ptr<const lighting::PreparedScene> prepared_;

@@ -90,10 +90,10 @@ TentAxisRange tentAxisRange(double c, double oLo, double oHi) {
 }  // namespace
 
 ReferenceShadowMap::ReferenceShadowMap(ShadowProjection projection, const Bvh& bvh, const Vec3& cameraPosition,
-                                       int threads)
+                                       int threads, int subPixelBits)
     : projection_(std::move(projection)), camera_(cameraPosition), resolution_(projection_.spec.resolution) {
   texels_.resize(projection_.views.size() * std::size_t(resolution_) * resolution_);
-  for (int v = 0; v < viewCount(); ++v) buildView(v, bvh, threads);
+  for (int v = 0; v < viewCount(); ++v) buildView(v, bvh, threads, subPixelBits);
 }
 
 double ReferenceShadowMap::depthError(const ShadowView& view, const Vec3& q) const {
@@ -109,7 +109,7 @@ double ReferenceShadowMap::depthError(const ShadowView& view, const Vec3& q) con
   return tol::kDepthTieUlps * u + position * slope;
 }
 
-void ReferenceShadowMap::buildView(int v, const Bvh& bvh, int threads) {
+void ReferenceShadowMap::buildView(int v, const Bvh& bvh, int threads, int subPixelBits) {
   const ShadowView& view = projection_.views[v];
   const int n = resolution_;
   const WorldTriangles& world = bvh.world();
@@ -147,12 +147,13 @@ void ReferenceShadowMap::buildView(int v, const Bvh& bvh, int threads) {
                              (glm::length(q - camera_) + glm::length(view.origin - camera_)) / texelWorld;
       Range depths{texel.depth, texel.depth};
       double error = hits[k] ? depthError(view, q) : 0.0;
-      // The surface under a snapped centre: the hit triangle's plane a shift away.
+      // The surface under a snapped centre: the hit triangle's plane at the
+      // corners of the square the snapping may move the centre in.
       if (hits[k]) {
         const WorldTriangle& tri = world.triangles[hits[k]->triangle];
         const Vec3 normal = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-        const double shift = (tol::kSubpixelShiftPx + lateral) / n;
-        const double shifts[4][2] = {{shift, 0}, {-shift, 0}, {0, shift}, {0, -shift}};
+        const double shift = (tol::vertexSnapPx(subPixelBits) + lateral) / n;
+        const double shifts[4][2] = {{shift, shift}, {-shift, shift}, {shift, -shift}, {-shift, -shift}};
         for (const auto& s : shifts) {
           const TexelRay t = view.rayThrough(mu + s[0], mv + s[1]);
           const double facing = glm::dot(t.ray.direction, normal);
@@ -175,7 +176,7 @@ void ReferenceShadowMap::buildView(int v, const Bvh& bvh, int threads) {
         }
       if (neighbourDiffers) {
         constexpr int kProbes = 8;
-        const double radius = (tol::kEdgeDistancePx + lateral) / n;
+        const double radius = (tol::edgeDistancePx(subPixelBits) + lateral) / n;
         for (int p = 0; p < kProbes; ++p) {
           const double angle = 2.0 * std::numbers::pi * p / kProbes;
           const TexelRay t = view.rayThrough(mu + radius * std::cos(angle), mv + radius * std::sin(angle));

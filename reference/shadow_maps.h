@@ -17,6 +17,7 @@
 #include "lighting/shadow_projection.h"
 #include "imaging/image.h"
 #include "reference/bvh.h"
+#include "reference/tolerance_model.h"
 
 #include <vector>
 
@@ -47,8 +48,10 @@ class ReferenceShadowMap {
   // Builds the map of `projection` (every view) from `bvh`'s triangles.
   // `cameraPosition`: the frame's camera, for the float32 position errors of
   // a camera-relative shadow pass. `threads` as ReferenceOptions::threads.
+  // `subPixelBits`: the shadow pass's device's sub-pixel bits, how far its
+  // vertices may snap (tolerance::vertexSnapPx, in texels).
   ReferenceShadowMap(lighting::ShadowProjection projection, const Bvh& bvh, const Vec3& cameraPosition,
-                     int threads = 0);
+                     int threads = 0, int subPixelBits = tolerance::kMinimumSubPixelBits);
 
   const lighting::ShadowProjection& projection() const { return projection_; }
   int resolution() const { return resolution_; }
@@ -69,7 +72,7 @@ class ReferenceShadowMap {
   imaging::Image viewImage(int view) const;
 
  private:
-  void buildView(int view, const Bvh& bvh, int threads);
+  void buildView(int view, const Bvh& bvh, int threads, int subPixelBits);
   double depthError(const lighting::ShadowView& view, const Vec3& q) const;
 
   lighting::ShadowProjection projection_;

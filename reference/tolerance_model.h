@@ -46,16 +46,33 @@ constexpr double kUnitDotAbsError = 8 * kUnitRoundoff;
 // transform (3 products + 3 sums) + interpolation (3 ops), rounded up.
 constexpr double kPositionRoundingSteps = 8;
 
-// Vertices snap to the sub-pixel grid: Vulkan guarantees subPixelPrecisionBits
-// >= 4, so a vertex moves by up to half of 1/16 pixel, and so does the surface
-// point a pixel centre sees. The reference shades the four points a shift of
-// this size away and takes the largest change.
-constexpr double kSubpixelShiftPx = 1.0 / 32.0;
+// Vertices snap to the sub-pixel grid. Vulkan: "x_f and y_f have limited
+// precision, where the number of fractional bits retained is specified by
+// subPixelPrecisionBits" (at least 4; OpenGL's GL_SUBPIXEL_BITS, at least 4
+// too). Neither API says how a vertex is rounded to that grid, so each
+// vertex's x_f and y_f may be off by up to one whole grid step, each vertex
+// on its own: vertexSnapPx(b) = 2^-b pixel, b the device's bits (fewer than
+// the minimum count as the minimum).
+constexpr int kMinimumSubPixelBits = 4;
+inline double vertexSnapPx(int subPixelBits) {
+  return 1.0 / double(1 << (subPixelBits < kMinimumSubPixelBits ? kMinimumSubPixelBits : subPixelBits));
+}
+// What a pixel centre then sees: the snapped triangle's attributes at the
+// centre are the unsnapped triangle's at the point its affine map takes
+// there, the centre moved by a convex combination of the vertices' moves,
+// so anywhere in the square of half-side vertexSnapPx around it (not a rigid
+// shift of the image: the move differs across the triangle). To first order
+// the value changes by |d/dx| s + |d/dy| s there, which the reference takes
+// as the larger change of the two shifts along x plus the larger of the two
+// along y (reference_renderer.cpp).
 
 // Pixel centres closer than this to a change of surface (silhouette, object or
 // box-face boundary) may go to either side under the snapping above plus the
-// tie-breaking rule: masked as don't care. Twice the shift, for margin.
-constexpr double kEdgeDistancePx = 1.0 / 16.0;
+// tie-breaking rule: masked as don't care. An edge moves by at most sqrt(2)
+// vertexSnapPx (the larger move of its two ends), and the ring of eight
+// probes at radius r finds every edge nearer than r cos(pi/8): 2 vertexSnapPx
+// covers both.
+inline double edgeDistancePx(int subPixelBits) { return 2.0 * vertexSnapPx(subPixelBits); }
 
 // Two surfaces closer in depth than this many D32F ULPs of the stored depth
 // (plus the position error above) may win the LESS test either way: masked.
@@ -122,7 +139,7 @@ constexpr double kReconstructionDepthSteps = 12;
 // turned into world units by the view's half-extent at the point's depth.
 // Clipped triangle vertices lie within |x|, |y| <= w (a guard band multiplies
 // this, but a lateral error is also a sub-pixel shift: 13u of NDC is 1e-4
-// pixel at 256 pixels, far inside kSubpixelShiftPx).
+// pixel at 256 pixels, far inside vertexSnapPx).
 constexpr double kReconstructionNdcSteps = 13;
 
 // The float32 inverse view-projection product itself and the divide by w, in
@@ -219,10 +236,11 @@ constexpr double kCookieCoordinateSteps = 8;
 constexpr double kShadowPositionSteps = 16;
 
 // Which surface a texel centre sees: the shadow pass snaps vertices to the
-// sub-pixel grid like the camera's (kSubpixelShiftPx of a texel), so the
-// reference also takes the depths a shift that far away sees; centres within
-// kEdgeDistancePx of a change of surface admit either surface's depth (or the
-// clear value 1).
+// sub-pixel grid like the camera's (vertexSnapPx of a texel, each vertex on
+// its own), so the reference also takes the depths its plane has at the
+// corners of that square (a plane's depth is linear: its extremes there);
+// centres within edgeDistancePx of a change of surface admit either
+// surface's depth (or the clear value 1).
 
 // The lookup's map coordinates and reference depth: clip = M p' (the same
 // transform error as above, as a position error of p'), then x / w, y / w,

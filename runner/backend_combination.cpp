@@ -12,8 +12,11 @@ std::vector<BackendCombination> selectCombinations(const std::vector<std::string
   for (const std::string& name : names) {
     bool known = false;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      // "gl-egl" names the API backend: llvmpipe and softpipe both.
-      if (all[i].suffix == name || all[i].backend == name) chosen[i] = known = true;
+      // "gl-egl" names the API backend: llvmpipe and softpipe both. "vulkan"
+      // names the loader's own driver alone (a vendor's ICD, or lavapipe): a
+      // Vulkan driver the table names is chosen by its suffix
+      // (vulkan-swiftshader) or by --driver.
+      if (all[i].suffix == name || (all[i].backend == name && all[i].takesMesaDriver())) chosen[i] = known = true;
     }
     if (!known)
       throw std::invalid_argument("unknown backend '" + name + "'; expected one of: " +
@@ -35,17 +38,25 @@ std::vector<BackendCombination> selectCombinations(const std::vector<std::string
         named && named->backend != name && named->driver != driver)
       throw std::invalid_argument("--backend " + name + " runs " + named->driver + ", and --driver asks for " + driver +
                                   ": name the API backend (" + named->backend + ") with --driver");
+  // A Vulkan driver's name (swiftshader) moves the Vulkan combinations to
+  // it; any other name is a Mesa driver and moves the GL combinations. The
+  // combinations of the other API keep their own driver.
+  const BackendCombination* vulkanDriver = backends::findCombination("vulkan", driver);
+  const bool namesVulkanDriver = vulkanDriver && vulkanDriver->driver == driver;
   std::vector<BackendCombination> withDriver;
-  bool anyGl = false;
+  bool anyMoved = false;
   for (const BackendCombination& c : chosen) {
-    // Vulkan has no --driver: its ICD is chosen by the loader (--device).
-    const BackendCombination one = c.driver.empty() ? c : backends::combinationWithDriver(c.backend, driver);
-    anyGl = anyGl || !c.driver.empty();
+    const bool moves = c.takesMesaDriver() != namesVulkanDriver;
+    const BackendCombination one =
+        !moves ? c : namesVulkanDriver ? *vulkanDriver : backends::combinationWithDriver(c.backend, driver);
+    anyMoved = anyMoved || moves;
     const bool seen = std::any_of(withDriver.begin(), withDriver.end(),
                                   [&](const BackendCombination& w) { return w.suffix == one.suffix; });
     if (!seen) withDriver.push_back(one);
   }
-  if (!anyGl) throw std::invalid_argument("--driver '" + driver + "' chooses a GL driver, and no GL backend is run");
+  if (!anyMoved)
+    throw std::invalid_argument("--driver '" + driver + "' chooses a " + (namesVulkanDriver ? "Vulkan" : "GL") +
+                                " driver, and no " + (namesVulkanDriver ? "Vulkan" : "GL") + " backend is run");
   return withDriver;
 }
 

@@ -34,13 +34,16 @@ endmacro()
 # when its scene fails the comparison ("Fail <test>:", the expected mismatch),
 # so one that starts to pass (a fixed driver: UnexpectedPass) or crashes
 # fails. Only the Fail status is listed there.
-set(expected_failures_file ${CMAKE_CURRENT_SOURCE_DIR}/expected-failures/mesa-22.3.txt)
-set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${expected_failures_file})
-file(STRINGS ${expected_failures_file} expected_failure_lines REGEX "^[^#].*,Fail")
+# Each file names its driver's tests by suffix (mesa-22.3.txt the Mesa
+# combinations, swiftshader-5.0.txt vulkan-swiftshader), so all are read.
+file(GLOB expected_failures_files CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/expected-failures/*.txt)
 set(expected_failing_tests)
-foreach(line ${expected_failure_lines})
-  string(REGEX REPLACE ",.*" "" expected_test "${line}")
-  list(APPEND expected_failing_tests ${expected_test})
+foreach(expected_failures_file ${expected_failures_files})
+  file(STRINGS ${expected_failures_file} expected_failure_lines REGEX "^[^#].*,Fail")
+  foreach(line ${expected_failure_lines})
+    string(REGEX REPLACE ",.*" "" expected_test "${line}")
+    list(APPEND expected_failing_tests ${expected_test})
+  endforeach()
 endforeach()
 
 file(GLOB scene_files CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/scenes/*/*.json)

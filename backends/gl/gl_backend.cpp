@@ -46,6 +46,11 @@ class GlBackend final : public Backend {
     info_.driver = glString(gl_, GL_VENDOR);
     info_.driverVersion = glString(gl_, GL_VERSION);
     info_.apiVersion = "GLSL " + glString(gl_, GL_SHADING_LANGUAGE_VERSION);
+    // OpenGL 3.3 core: "SUBPIXEL_BITS ... Number of bits of subpixel precision
+    // in screen xw and yw", at least 4 (table 6.54).
+    GLint subPixelBits = 0;
+    gl_.glGetIntegerv(GL_SUBPIXEL_BITS, &subPixelBits);
+    info_.subPixelPrecisionBits = int(subPixelBits);
     // Mesa picks its driver once per process; say so rather than run another.
     const std::string wanted = options.device.empty() || !options.driver.empty() ? requestedMesaDriver(options) : "";
     if (!wanted.empty() && !rendererRunsOn(info_.name, wanted))

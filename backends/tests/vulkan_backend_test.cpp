@@ -147,3 +147,42 @@ TEST(VulkanSpecialisation, SpecialisedAndFullShadersAgreeOnEveryScene) {
 }
 
 }  // namespace
+
+namespace vulkan_driver_choice {
+
+// chromium's SwiftShader, named with --driver: its devices only, never the
+// loader's own (lavapipe), and the loader's choice comes back afterwards in
+// the same process.
+TEST(VulkanDriverChoice, SwiftShaderRunsOnSwiftShaderAlone) {
+  backends::BackendOptions options;
+  options.driver = "swiftshader";
+  std::vector<backends::DeviceInfo> listed;
+  try {
+    listed = backends::findBuiltBackendEntry("vulkan")->listDevices(options);
+  } catch (const backends::NotSupportedError& e) {
+    GTEST_SKIP() << e.what();
+  }
+  ASSERT_FALSE(listed.empty());
+  for (const backends::DeviceInfo& d : listed) {
+    EXPECT_NE(d.name.find("SwiftShader"), std::string::npos) << d.name;
+    EXPECT_EQ(d.selectedBy.rfind("--driver swiftshader --device ", 0), 0u) << d.selectedBy;
+    EXPECT_GE(d.subPixelPrecisionBits, 4);
+  }
+  // The loader's own choice in the same process: no SwiftShader device, so
+  // the manifest was the instance's alone.
+  const std::vector<backends::DeviceInfo> own = backends::findBuiltBackendEntry("vulkan")->listDevices({});
+  for (const backends::DeviceInfo& d : own) EXPECT_EQ(d.name.find("SwiftShader"), std::string::npos) << d.name;
+}
+
+TEST(VulkanDriverChoice, AnUnknownDriverIsNotSupportedAndNamesTheKnownOnes) {
+  backends::BackendOptions options;
+  options.driver = "softpipe";
+  try {
+    backends::findBuiltBackendEntry("vulkan")->listDevices(options);
+    FAIL() << "Vulkan accepted --driver softpipe";
+  } catch (const backends::NotSupportedError& e) {
+    EXPECT_NE(std::string(e.what()).find("swiftshader"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace vulkan_driver_choice

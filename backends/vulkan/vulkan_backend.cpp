@@ -30,7 +30,7 @@ class VulkanBackend final : public Backend {
  public:
   explicit VulkanBackend(const BackendOptions& options)
       : options_(options),
-        instance_(options.validation),
+        instance_(options.validation, options.driver),
         device_(instance_, options.device),
         cache_(device_),
         pipelines_(device_, cache_),
@@ -268,11 +268,12 @@ BackendEntry vulkanBackendEntry() {
   entry.name = "vulkan";
   entry.listDevices = [](const BackendOptions& options) {
     return translatingVulkanErrors([&] {
-      VulkanInstance instance(options.validation);
+      VulkanInstance instance(options.validation, options.driver);
+      const std::string driverOption = options.driver.empty() ? "" : "--driver " + options.driver + " ";
       std::vector<DeviceInfo> devices;
       for (const vk::raii::PhysicalDevice& d : instance.physicalDevices()) {
         devices.push_back(describeDevice(d));
-        devices.back().selectedBy = "--device " + std::to_string(devices.size() - 1);
+        devices.back().selectedBy = driverOption + "--device " + std::to_string(devices.size() - 1);
       }
       return devices;
     });

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
 #include <sstream>
 
 namespace backends::vulkan {
@@ -37,9 +40,54 @@ std::string lower(std::string s) {
   return s;
 }
 
+// Points the loader at one ICD manifest while an instance is created (the
+// loader reads the variables when it scans for drivers, in vkCreateInstance),
+// then puts back what the environment held, so a later instance of the same
+// process sees the loader's own choice again.
+class ScopedDriverFiles {
+ public:
+  explicit ScopedDriverFiles(const std::string& manifest) {
+    for (Saved& s : saved_) {
+      const char* old = std::getenv(s.name);
+      if (old) s.value = old;
+      ::setenv(s.name, manifest.c_str(), 1);
+    }
+  }
+  ~ScopedDriverFiles() {
+    for (const Saved& s : saved_) {
+      if (s.value) ::setenv(s.name, s.value->c_str(), 1);
+      else ::unsetenv(s.name);
+    }
+  }
+  ScopedDriverFiles(const ScopedDriverFiles&) = delete;
+  ScopedDriverFiles& operator=(const ScopedDriverFiles&) = delete;
+
+ private:
+  struct Saved {
+    const char* name;
+    std::optional<std::string> value;
+  };
+  // VK_DRIVER_FILES is the loader's current name; VK_ICD_FILENAMES the one
+  // older loaders read (Debian 12's reads both).
+  Saved saved_[2] = {{"VK_DRIVER_FILES", std::nullopt}, {"VK_ICD_FILENAMES", std::nullopt}};
+};
+
+const NamedVulkanDriver* namedDriver(const std::string& name) {
+  if (name.empty()) return nullptr;
+  const NamedVulkanDriver* driver = findNamedVulkanDriver(name);
+  if (!driver)
+    throw NotSupportedError("Vulkan has no driver named '" + name + "' (--driver on Vulkan: " +
+                            namedVulkanDriverList() + ")");
+  if (!std::filesystem::exists(driver->manifest))
+    throw NotSupportedError(driver->title + "'s Vulkan driver is not installed (no " + driver->manifest +
+                            "; Debian's " + driver->package + " package installs it)");
+  return driver;
+}
+
 }  // namespace
 
-VulkanInstance::VulkanInstance(bool validation) try : log_(std::make_unique<ValidationLog>()) {
+VulkanInstance::VulkanInstance(bool validation, const std::string& driver) try
+    : log_(std::make_unique<ValidationLog>()), driver_(namedDriver(driver)) {
   if (context_.enumerateInstanceVersion() < kRequiredApiVersion)
     throw NotSupportedError("the Vulkan loader is older than 1.3");
   validating_ = validation && layerInstalled(context_, kValidationLayer);
@@ -66,7 +114,11 @@ VulkanInstance::VulkanInstance(bool validation) try : log_(std::make_unique<Vali
       .enabledExtensionCount = std::uint32_t(extensions.size()),
       .ppEnabledExtensionNames = extensions.data(),
   };
-  instance_ = vk::raii::Instance(context_, info);
+  {
+    std::optional<ScopedDriverFiles> onlyThisDriver;
+    if (driver_) onlyThisDriver.emplace(driver_->manifest);
+    instance_ = vk::raii::Instance(context_, info);
+  }
   if (validating_) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, log_->messengerCreateInfo());
 } catch (const vk::IncompatibleDriverError&) {
   throw NotSupportedError("no Vulkan driver is installed (VK_ERROR_INCOMPATIBLE_DRIVER)");
@@ -81,8 +133,17 @@ VulkanInstance::VulkanInstance(bool validation) try : log_(std::make_unique<Vali
 
 std::vector<vk::raii::PhysicalDevice> VulkanInstance::physicalDevices() const {
   std::vector<vk::raii::PhysicalDevice> devices;
-  for (vk::raii::PhysicalDevice& d : vk::raii::PhysicalDevices(instance_))
-    if (d.getProperties().apiVersion >= kRequiredApiVersion) devices.push_back(std::move(d));
+  for (vk::raii::PhysicalDevice& d : vk::raii::PhysicalDevices(instance_)) {
+    if (d.getProperties().apiVersion < kRequiredApiVersion) continue;
+    if (driver_ && d.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>()
+                           .get<vk::PhysicalDeviceDriverProperties>()
+                           .driverID != driver_->driverId)
+      continue;
+    devices.push_back(std::move(d));
+  }
+  if (driver_ && devices.empty())
+    throw NotSupportedError(driver_->manifest + " gave no Vulkan 1.3 device that reports " + driver_->title +
+                            "'s driver ID");
   return devices;
 }
 
@@ -96,6 +157,7 @@ DeviceInfo describeDevice(const vk::raii::PhysicalDevice& device) {
   info.driverVersion = driverVersionString(p.vendorID, p.driverVersion);
   info.apiVersion = versionString(p.apiVersion);
   info.subTexelPrecisionBits = int(p.limits.subTexelPrecisionBits);
+  info.subPixelPrecisionBits = int(p.limits.subPixelPrecisionBits);
   return info;
 }
 

@@ -6,6 +6,7 @@
 #include "backends/backend.h"
 #include "backends/vulkan/validation_log.h"
 #include "backends/vulkan/vulkan_api.h"
+#include "backends/vulkan/vulkan_drivers.h"
 
 #include <memory>
 #include <string>
@@ -18,9 +19,14 @@ class VulkanInstance {
   // Throws NotSupportedError when there is no Vulkan loader or no Vulkan 1.3
   // instance. With `validation`, VK_LAYER_KHRONOS_validation is enabled when
   // installed (synchronisation checks included) and its messages are logged.
-  explicit VulkanInstance(bool validation);
+  // `driver` (--driver) names a driver of vulkan_drivers.h: the instance
+  // loads that driver's manifest alone, and NotSupportedError says so when
+  // it is not installed or is unknown; empty, the loader's own choice.
+  explicit VulkanInstance(bool validation, const std::string& driver = "");
 
   const vk::raii::Instance& instance() const { return instance_; }
+  // The Vulkan 1.3 devices; with a named driver, only those that report its
+  // VkDriverId (NotSupportedError when none does).
   std::vector<vk::raii::PhysicalDevice> physicalDevices() const;
   // Null when validation is off or the layer is not installed.
   ValidationLog* validationLog() { return validating_ ? log_.get() : nullptr; }
@@ -28,6 +34,7 @@ class VulkanInstance {
  private:
   std::unique_ptr<ValidationLog> log_;  // outlives the messenger that points at it
   bool validating_ = false;
+  const NamedVulkanDriver* driver_ = nullptr;
   vk::raii::Context context_;
   vk::raii::Instance instance_{nullptr};
   vk::raii::DebugUtilsMessengerEXT messenger_{nullptr};

@@ -81,19 +81,25 @@ Light mixedShadowedDirectional(double intensity) {
   return l;
 }
 
-TEST(BakedReference, LightmapIsAlbedoTimesTheBilinearSampleWithAFilteringTolerance) {
-  // 64 px, N = 4: pixel (27, 20) has texel coordinates
-  //   x = 27.5 / 16 - 0.5 = 1.21875 (texels 1, 2; fx = 7/32),
-  //   y = 20.5 / 16 - 0.5 = 0.78125 (texels 0, 1; fy = 25/32).
-  // r(i, j) = (1 + i + 4 j) / 8 is linear, so the sample is
-  //   (1 + 1.21875 + 4 * 0.78125) / 8 = 0.66796875; g = 2 r; b = 0.25.
+// A 64-pixel view of a plane with albedo (0.5, 1, 1) and a 4 x 4 lightmap
+// r(i, j) = (1 + i + 4 j) / 8, g = 2 r, b = 0.25, and no lights.
+std::shared_ptr<const PreparedScene> gradientLightmapScene() {
   Scene s = planeScene(64, 4);
   s.objects[0].albedo = {0.5, 1, 1};
   const TexelMap lightmap = mapOf(4, [](int i, int j) {
     const double r = (1 + i + 4 * j) / 8.0;
     return Vec4(r, 2 * r, 0.25, 1);
   });
-  const ReferenceImages img = render(withMaps(s, 0, lightmap, constantMap(4, Vec4(1))));
+  return withMaps(s, 0, lightmap, constantMap(4, Vec4(1)));
+}
+
+TEST(BakedReference, LightmapIsAlbedoTimesTheBilinearSampleWithAFilteringTolerance) {
+  // 64 px, N = 4: pixel (27, 20) has texel coordinates
+  //   x = 27.5 / 16 - 0.5 = 1.21875 (texels 1, 2; fx = 7/32),
+  //   y = 20.5 / 16 - 0.5 = 0.78125 (texels 0, 1; fy = 25/32).
+  // r(i, j) = (1 + i + 4 j) / 8 is linear, so the sample is
+  //   (1 + 1.21875 + 4 * 0.78125) / 8 = 0.66796875; g = 2 r; b = 0.25.
+  const ReferenceImages img = render(gradientLightmapScene());
   EXPECT_FLOAT_EQ(img.value.at(27, 20, 0), 0.5f * 0.66796875f);
   EXPECT_FLOAT_EQ(img.value.at(27, 20, 1), 2 * 0.66796875f);
   EXPECT_FLOAT_EQ(img.value.at(27, 20, 2), 0.25f);
@@ -102,20 +108,40 @@ TEST(BakedReference, LightmapIsAlbedoTimesTheBilinearSampleWithAFilteringToleran
   // Tolerance, red (docs/tolerances.md section 4), with u = 2^-24:
   //   filtering: A (2 * 2^-4 * spread + 2 N spread 16u + 6u (|value| + spread))
   //              spread 7/8 - 2/8 = 5/8: 0.5 (0.078125 + 80u + 6u * 1.29296875)
-  //   sub-pixel: a 1/32-pixel shift along j moves v by 1/2048, y by 1/512
-  //              texel, r by 4/8 * 1/512 = 1/1024, times A: 1/2048
+  //   sub-pixel: vertices snap by up to 1/16 pixel (4 bits, the minimum):
+  //              along j that moves v by 1/1024, y by 1/256 texel, r by
+  //              4/8 * 1/256 = 1/512; along i x by 1/256 texel, r by
+  //              1/8 * 1/256 = 1/2048; both at once: 5/2048, times A: 5/4096
   //   roundings: (2 + 1 lightmap add + 1 storage) u |V|
   const double u = 0x1p-24;
-  const double red = 0.5 * (2 * 0x1p-4 * 0.625 + 80 * u + 6 * u * (0.66796875 + 0.625)) + 1.0 / 2048 +
+  const double red = 0.5 * (2 * 0x1p-4 * 0.625 + 80 * u + 6 * u * (0.66796875 + 0.625)) + 5.0 / 4096 +
                      4 * u * 0.5 * 0.66796875;
   EXPECT_NEAR(img.tolerance.at(27, 20, 0), red, 1e-8);
-  EXPECT_NEAR(img.tolerance.at(27, 20, 0), 0.0390625 + 1.0 / 2048, 3e-6);  // the filtering term dominates
+  EXPECT_NEAR(img.tolerance.at(27, 20, 0), 0.0390625 + 5.0 / 4096, 3e-6);  // the filtering term dominates
   // Green: spread 10/8, A = 1, slope twice red's.
-  const double green = 0.15625 + 160 * u + 6 * u * (2 * 0.66796875 + 1.25) + 2.0 / 1024 + 4 * u * 2 * 0.66796875;
+  const double green = 0.15625 + 160 * u + 6 * u * (2 * 0.66796875 + 1.25) + 5.0 / 1024 + 4 * u * 2 * 0.66796875;
   EXPECT_NEAR(img.tolerance.at(27, 20, 1), green, 2e-8);
   // Blue is flat: roundings only.
   EXPECT_GT(img.tolerance.at(27, 20, 2), 0.0f);
   EXPECT_LT(img.tolerance.at(27, 20, 2), 1e-6f);
+}
+
+TEST(BakedReference, TheSubPixelTermFollowsTheDevicesBits) {
+  // The lightmap of the test above, on a device that keeps 8 sub-pixel bits:
+  // a vertex moves by up to 1/256 pixel, 1/16 of the 4-bit step, so the
+  // sub-pixel term of red, 5/4096 there, is 5/65536 here (along j r moves by
+  // 4/8 * 1/4096, along i by 1/8 * 1/4096, times A = 0.5); the filtering
+  // term is the same, 2^-4 weights.
+  const auto prepared = gradientLightmapScene();
+  ReferenceOptions eightBits;
+  eightBits.subPixelPrecisionBits = 8;
+  ReferenceOptions fewerThanTheMinimum;  // held to the minimum, 4
+  fewerThanTheMinimum.subPixelPrecisionBits = 2;
+  const double u = 0x1p-24;
+  const double filtering = 0.5 * (2 * 0x1p-4 * 0.625 + 80 * u + 6 * u * (0.66796875 + 0.625)) +
+                           4 * u * 0.5 * 0.66796875;
+  EXPECT_NEAR(render(prepared, eightBits).tolerance.at(27, 20, 0), filtering + 5.0 / 65536, 1e-8);
+  EXPECT_NEAR(render(prepared, fewerThanTheMinimum).tolerance.at(27, 20, 0), filtering + 5.0 / 4096, 1e-8);
 }
 
 TEST(BakedReference, AMixedLightOnChannelOneWithStrengthHalfOverAZeroMaskTexelGetsHalf) {
@@ -160,12 +186,13 @@ TEST(BakedReference, AMaskGradientWidensTheToleranceByTheFilteringTerm) {
   const double d2 = 4.01220703125;
   const double unmasked = (2 / std::sqrt(d2)) * std::pow(1 - (d2 / 100) * (d2 / 100), 2) / d2;
   EXPECT_NEAR(img.value.at(32, 32, 0), 0.765625 * unmasked, 1e-6);
-  // Filtering: 0.0625 unmasked. Sub-pixel: a 1/32-pixel shift moves x by
-  // 1/512 texel: the mask by 1/512, the term by 0.5/512 unmasked (~0.001);
-  // the light's own gradient and the arithmetic add far less.
+  // Filtering: 0.0625 unmasked. Sub-pixel: a vertex snapped by 1/16 pixel
+  // moves x by 1/256 texel: the mask by 1/256, the term by 0.5/256 unmasked
+  // (~0.002; the mask is constant along y); the light's own gradient and the
+  // arithmetic add far less.
   const float tolerance = img.tolerance.at(32, 32, 0);
   EXPECT_GT(tolerance, 0.0625 * unmasked);
-  EXPECT_LT(tolerance, (0.0625 + 0.5 / 512 + 2e-4) * unmasked);
+  EXPECT_LT(tolerance, (0.0625 + 0.5 / 256 + 2e-4) * unmasked);
 }
 
 TEST(BakedReference, VertexLightsGetNoShadowMask) {
@@ -291,11 +318,13 @@ TEST(BakedReferenceRealtime, InterpolationAllowanceIsZeroAtTexelCentresAndPositi
   EXPECT_LT(between.allowance.r - between.interpolation.r, 1e-6);
 
   // In the image: the pixel on the texel centre keeps a tight tolerance (the
-  // allowance is taken over the sub-pixel shifts too, 1/192 m away: about
-  // 2e-3 here); the one near the middle of the cell gets the whole gap
-  // between the flat bilinear value and the peak under the light.
+  // allowance is taken over the sub-pixel shifts too, 1/16 pixel = 1/96 m
+  // away, where it grows as the square of the distance from the centre:
+  // about 4 x 2e-3 here, 2e-3 being its value 1/192 m away); the one near the
+  // middle of the cell gets the whole gap between the flat bilinear value and
+  // the peak under the light.
   const ReferenceImages img = render(prepared, realtimeOptions());
-  EXPECT_LT(img.tolerance.at(22, 22, 0), 5e-3f);
+  EXPECT_LT(img.tolerance.at(22, 22, 0), 1e-2f);
   EXPECT_GT(img.tolerance.at(29, 29, 0), 0.9 * std::abs(pointAt(1.25, 1.25) - pointAt(-1.0 / 12, -1.0 / 12)));
 }
 

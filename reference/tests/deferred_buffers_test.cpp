@@ -130,18 +130,33 @@ TEST(DeferredBuffers, ForwardAndHdr32AgreeOnTheValue) {
   EXPECT_GE(d.tolerance.at(8, 8, 0), f.tolerance.at(8, 8, 0));
 }
 
-TEST(DeferredBuffers, ReconstructionErrorOfAnOrthographicView) {
-  // Default camera: orthographic, 10 high, near 0.1, far 100, at (0, 10, 0)
-  // looking down; a square image. At p = (0, 0, 0), 10 below the camera:
-  //   depth:  12 u (100 - 0.1)               = 1198.8 u
-  //   ndc:    13 u sqrt(2) * 5 (half height)  = 91.92 u
-  //   matrix: 16 u * 10                        = 160 u
+// Default camera: orthographic, 10 high, near 0.1, far 100, at (0, 10, 0)
+// looking down; a square 16-pixel image. At p = (0, 0, 0), 10 below the
+// camera, the arithmetic of the reconstruction is
+//   depth:  12 u (100 - 0.1)               = 1198.8 u
+//   ndc:    13 u sqrt(2) * 5 (half height)  = 91.92 u
+//   matrix: 16 u * 10                        = 160 u
+double reconstructionAtTheOriginOfTheDefaultView(double vertexSnap) {
   Scene s;
   s.image = {16, 16};
   const Frame frame = prepareFrame(prepareScene(s), 0);
-  const double u = tol::kUnitRoundoff;
-  const double expected = (12.0 * 99.9 + 13.0 * std::sqrt(2.0) * 5.0 + 160.0) * u;
-  EXPECT_NEAR(reconstructionPositionError(frame.view, Vec3(0.0)), expected, 1e-12);
+  return reconstructionPositionError(frame.view, Vec3(0.0), vertexSnap);
+}
+
+const double kDefaultViewArithmetic = (12.0 * 99.9 + 13.0 * std::sqrt(2.0) * 5.0 + 160.0) * tol::kUnitRoundoff;
+
+TEST(DeferredBuffers, ReconstructionErrorOfAnOrthographicView) {
+  // Without snapping (a device that keeps every bit): the arithmetic alone.
+  EXPECT_NEAR(reconstructionAtTheOriginOfTheDefaultView(0.0), kDefaultViewArithmetic, 1e-12);
+}
+
+TEST(DeferredBuffers, ReconstructionErrorOfASnappedGBuffer) {
+  // Vertices snapped to 1/16 pixel: the depth the G-buffer stored is that of
+  // a point up to 1/16 pixel from the centre on each axis, of a 10 / 16 =
+  // 0.625 m pixel, and the light pass puts it on the centre's ray:
+  // sqrt(2) / 16 * 0.625 m across the view axis, beside the arithmetic.
+  EXPECT_NEAR(reconstructionAtTheOriginOfTheDefaultView(1.0 / 16),
+              kDefaultViewArithmetic + std::sqrt(2.0) / 16.0 * 0.625, 1e-12);
 }
 
 }  // namespace

@@ -13,9 +13,25 @@ std::vector<std::string> suffixes(const std::vector<BackendCombination>& combina
   return names;
 }
 
-TEST(BackendCombination, NoNameMeansAllFiveInSpecOrder) {
+TEST(BackendCombination, NoNameMeansAllSixInTableOrder) {
   EXPECT_EQ(suffixes(selectCombinations({})),
-            (std::vector<std::string>{"vulkan", "gl-egl", "gl-osmesa", "gl-egl-softpipe", "gl-osmesa-softpipe"}));
+            (std::vector<std::string>{"vulkan", "gl-egl", "gl-osmesa", "gl-egl-softpipe", "gl-osmesa-softpipe",
+                                      "vulkan-swiftshader"}));
+}
+
+TEST(BackendCombination, VulkanNamesTheLoadersOwnDriverAlone) {
+  // A vendor's `--backend vulkan` with VK_ICD_FILENAMES runs their driver,
+  // not chromium's SwiftShader beside it.
+  EXPECT_EQ(suffixes(selectCombinations({"vulkan"})), (std::vector<std::string>{"vulkan"}));
+  EXPECT_EQ(suffixes(selectCombinations({"vulkan-swiftshader"})), (std::vector<std::string>{"vulkan-swiftshader"}));
+  const auto viaDriver = selectCombinations({"vulkan"}, "swiftshader");
+  ASSERT_EQ(suffixes(viaDriver), (std::vector<std::string>{"vulkan-swiftshader"}));
+  EXPECT_EQ(viaDriver[0].backend, "vulkan");
+  EXPECT_EQ(viaDriver[0].driver, "swiftshader");
+  // A Vulkan driver's name moves no GL combination.
+  EXPECT_EQ(suffixes(selectCombinations({"vulkan", "gl-egl"}, "swiftshader")),
+            (std::vector<std::string>{"vulkan-swiftshader", "gl-egl", "gl-egl-softpipe"}));
+  EXPECT_THROW(selectCombinations({"gl-egl"}, "swiftshader"), std::invalid_argument);
 }
 
 TEST(BackendCombination, ApiNameStandsForEveryDriverOfIt) {
@@ -40,8 +56,9 @@ TEST(BackendCombination, UnknownNameIsNamedInTheError) {
 }
 
 TEST(BackendCombination, DriverMakesTheGlCombinationsOnePerApiBackend) {
+  // The Vulkan combinations keep their own drivers.
   EXPECT_EQ(suffixes(selectCombinations({}, "softpipe")),
-            (std::vector<std::string>{"vulkan", "gl-egl-softpipe", "gl-osmesa-softpipe"}));
+            (std::vector<std::string>{"vulkan", "gl-egl-softpipe", "gl-osmesa-softpipe", "vulkan-swiftshader"}));
   EXPECT_EQ(suffixes(selectCombinations({"gl-egl"}, "llvmpipe")), (std::vector<std::string>{"gl-egl"}));
   // A driver the table does not list keeps its name in the suffix.
   const auto zink = selectCombinations({"gl-osmesa"}, "zink");

@@ -13,12 +13,13 @@
 namespace backends {
 namespace {
 
-TEST(CombinationTable, TheFiveOfSpec10InOrder) {
+TEST(CombinationTable, TheSixOfSpec10InOrder) {
   std::vector<std::string> rows;
   for (const BackendCombination& c : backendCombinations()) rows.push_back(c.suffix + "=" + c.backend + "=" + c.driver);
   EXPECT_EQ(rows, (std::vector<std::string>{"vulkan=vulkan=", "gl-egl=gl-egl=llvmpipe", "gl-osmesa=gl-osmesa=llvmpipe",
                                             "gl-egl-softpipe=gl-egl=softpipe",
-                                            "gl-osmesa-softpipe=gl-osmesa=softpipe"}));
+                                            "gl-osmesa-softpipe=gl-osmesa=softpipe",
+                                            "vulkan-swiftshader=vulkan=swiftshader"}));
 }
 
 TEST(CombinationTable, CMakeReadsTheSameRows) {
@@ -41,13 +42,18 @@ TEST(CombinationTable, LookUps) {
   for (const char* second : {"gl-osmesa", "gl-osmesa-softpipe"}) EXPECT_TRUE(findCombination(second)->isSecondContextPath());
   for (const char* first : {"vulkan", "gl-egl", "gl-egl-softpipe"}) EXPECT_FALSE(findCombination(first)->isSecondContextPath());
   EXPECT_EQ(findCombination("metal"), nullptr);
-  // The default driver of a GL backend is llvmpipe; Vulkan has one combination.
+  // The default driver of a GL backend is llvmpipe; Vulkan's is the loader's
+  // own, and SwiftShader is named.
   EXPECT_EQ(findCombination("gl-egl", "")->suffix, "gl-egl");
   EXPECT_EQ(findCombination("gl-egl", "softpipe")->suffix, "gl-egl-softpipe");
   EXPECT_EQ(findCombination("vulkan", "")->suffix, "vulkan");
   EXPECT_EQ(findCombination("vulkan", "softpipe"), nullptr);
+  EXPECT_EQ(findCombination("vulkan", "swiftshader")->suffix, "vulkan-swiftshader");
+  EXPECT_FALSE(findCombination("vulkan-swiftshader")->takesMesaDriver());
+  EXPECT_TRUE(findCombination("gl-osmesa")->takesMesaDriver());
   EXPECT_EQ(findCombination("gl-egl-softpipe")->identifier(), "gl_egl_softpipe");
-  EXPECT_EQ(combinationSuffixList(), "vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe");
+  EXPECT_EQ(combinationSuffixList(),
+            "vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe, vulkan-swiftshader");
 }
 
 }  // namespace
