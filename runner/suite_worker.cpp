@@ -30,7 +30,10 @@ Json deviceJson(const backends::DeviceInfo& d) {
           {"driver", d.driver},
           {"driver_version", d.driverVersion},
           {"api_version", d.apiVersion},
-          {"selected_by", d.selectedBy}};
+          {"selected_by", d.selectedBy},
+          // What the device promises, which the tolerances use (docs/tolerances.md).
+          {"sub_pixel_bits", d.subPixelPrecisionBits},
+          {"sub_texel_bits", d.subTexelPrecisionBits}};
 }
 
 void emit(std::ostream& out, const Json& line) { out << line.dump() << '\n' << std::flush; }

@@ -11,9 +11,10 @@ function(add_choice_test name group suffixes args)
   set_tests_properties(run.choice-${name} PROPERTIES LABELS "run;choice")
 endfunction()
 
-# The shadows tests of the three combinations that are not softpipe, by
-# globs and by a caselist (with comments and a blank line) that lists them.
-add_choice_test(include-and-exclude shadows "vulkan;gl-egl;gl-osmesa" "--include;shadows.*;--exclude;*softpipe*")
+# The shadows tests of the three Mesa combinations that are not softpipe,
+# by globs and by a caselist (with comments and a blank line) that lists them.
+add_choice_test(include-and-exclude shadows "vulkan;gl-egl;gl-osmesa"
+  "--include;shadows.*;--exclude;*softpipe*;--exclude;*swiftshader*")
 set(shadows_caselist ${choice_out}/shadows-caselist.txt)
 file(WRITE ${shadows_caselist}
   "# the shadows group, softpipe left out (written by suite/test_choice_tests.cmake)\n\n"

@@ -73,7 +73,7 @@ TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
   const auto backend = backends::testing::createOrNull(GetParam(), whyNot);
   if (!backend) GTEST_SKIP() << whyNot;
   const std::set<std::string> expectedFailures =
-      backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_FILE);
+      backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_DIR);
 
   int checked = 0, frames = 0, legacy = 0, deferred = 0, lists = 0;
   double worstTightness = 0, worstDifference = 0;

@@ -28,7 +28,7 @@ TEST_P(GlAgreesWithVulkan, OnEveryScene) {
   // A driver's known mismatches with SPEC (softpipe's filtered shadow
   // compares) are its own; the comparison with the reference reports them.
   const std::set<std::string> expectedFailures =
-      backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_FILE);
+      backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_DIR);
   const std::string suffix = GetParam().suffix;
   const int scenes = backends::testing::forEachSuiteScene(
       LIGHTCTS_SCENES_DIR, *vulkan, *gl, [&](const backends::testing::SceneRenders& r) {

@@ -47,16 +47,20 @@ inline std::string sceneTestName(const std::filesystem::path& file, const std::s
   return file.parent_path().filename().string() + "." + file.stem().string() + "." + suffix;
 }
 
-// The tests an expected-failures file (suite/expected-failures/) lists: a
-// driver's known mismatches, which a test comparing two backends must not
-// count against it either. Only the names; the format is runner/expected_failures.h's.
-inline std::set<std::string> expectedFailingTests(const std::filesystem::path& file) {
+// The tests the expected-failures files of `folder` (suite/expected-failures/,
+// one file per driver, each naming its own combinations' tests) list: the
+// drivers' known mismatches, which a test comparing two backends must not
+// count against them either. Only the names; the format is runner/expected_failures.h's.
+inline std::set<std::string> expectedFailingTests(const std::filesystem::path& folder) {
   std::set<std::string> tests;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::size_t comma = line.find(',');
-    if (comma != std::string::npos) tests.insert(line.substr(0, comma));
+  for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(folder)) {
+    if (file.path().extension() != ".txt") continue;
+    std::ifstream in(file.path());
+    for (std::string line; std::getline(in, line);) {
+      if (line.empty() || line[0] == '#') continue;
+      const std::size_t comma = line.find(',');
+      if (comma != std::string::npos) tests.insert(line.substr(0, comma));
+    }
   }
   return tests;
 }

@@ -282,7 +282,8 @@ Vec vertexLights(const SceneSpec& s, const std::vector<int>& lights, const Vec& 
   return sum;
 }
 
-std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLights& applied) {
+std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLights& applied, double offsetX,
+                                          double offsetY) {
   std::vector<int> perPixel, perVertex;
   for (const std::string& name : applied.perPixel) perPixel.push_back(lightIndex(s, name));
   for (const std::string& name : applied.perVertex) perVertex.push_back(lightIndex(s, name));
@@ -297,7 +298,7 @@ std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLight
     for (int i = 0; i < s.width; ++i) {
       ExpectedPixel& pixel = image[std::size_t(j) * s.width + i];
       pixel.nearEdge = nearPlaneEdge(s, i, j);
-      const std::optional<Vec> p = hitPlane(s, pixelRay(s, i, j));
+      const std::optional<Vec> p = hitPlane(s, imageRay(s, i + 0.5 + offsetX, j + 0.5 + offsetY));
       if (!p) continue;  // background: 0
       pixel.onPlane = true;
       if (s.plane.srp) {

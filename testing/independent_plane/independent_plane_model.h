@@ -128,12 +128,14 @@ CameraRay pixelRay(const SceneSpec& s, int i, int j);
 std::optional<Vec> hitPlane(const SceneSpec& s, const CameraRay& ray);
 
 // Pixel centres closer than this (in pixels, screen space) to the edge of the
-// plane's image may land on either side of it in a rasteriser: vertices snap to
-// a 1/16-pixel grid (Vulkan's minimum subPixelPrecisionBits = 4), so an edge
-// moves by up to 1/32 pixel; this is twice that, the same distance SPEC 6's
-// reference masks (reference/tolerance_model.h kEdgeDistancePx). It is written
-// out again here so this model stays independent of the reference.
-constexpr double kEdgeDistancePx = 1.0 / 16.0;
+// plane's image may land on either side of it in a rasteriser: Vulkan keeps
+// subPixelPrecisionBits (at least 4) fractional bits of each vertex's x and y
+// and says nothing of the rounding, so each vertex may move by up to 1/16
+// pixel on each axis, on its own, and an edge by up to sqrt(2)/16; this is
+// twice 1/16, the distance SPEC 6's reference masks on a 4-bit device
+// (reference/tolerance_model.h edgeDistancePx). It is written out again here
+// so this model stays independent of the reference.
+constexpr double kEdgeDistancePx = 1.0 / 8.0;
 
 // Whether the disc of radius kEdgeDistancePx around the centre of pixel (i, j)
 // holds points on both sides of the plane's edge in the image (the silhouette
@@ -204,8 +206,11 @@ struct ExpectedPixel {
   Vec specular{0.0};
 };
 
-// Row-major, row 0 at the top, width * height entries.
-std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLights& applied);
+// Row-major, row 0 at the top, width * height entries. With an offset, each
+// pixel's value is the one seen through its centre moved by (offsetX,
+// offsetY) pixels (onPlane likewise; nearEdge stays the centre's).
+std::vector<ExpectedPixel> expectedPixels(const SceneSpec& s, const AppliedLights& applied, double offsetX = 0,
+                                          double offsetY = 0);
 
 // SPEC 3: colour = A * ambient + A * (sum of the lights); no lightmap here.
 // srp (SPEC 3.8): colour = diffuse * ambient + sum of lightTerm * directBRDF,
