@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   auto addBackend = [&](CLI::App* sub) {
     sub->add_option("--backend", backend.backend, "vulkan | gl-egl | gl-osmesa")->required();
     sub->add_option("--device", backend.device, "Device index or name substring");
-    sub->add_option("--driver", backend.driver, "GL backends: a Mesa Gallium driver (llvmpipe, softpipe, zink, ...)")
+    sub->add_option("--driver", backend.driver, "GL backends: a Mesa Gallium driver (llvmpipe, softpipe, zink, ...); vulkan: swiftshader")
         ->check(mesaDriverName);
     // Test-only (docs/cli.md): never needed to run the suite as shipped.
     sub->add_option("--mutant", backend.mutant, "Test only: a deliberately wrong variant of the model")
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
 
   auto* backendsCmd = cli.add_subcommand("backends", "List backends, drivers and devices");
   std::string backendsDriver;
-  backendsCmd->add_option("--driver", backendsDriver, "Probe only this Mesa driver on the GL backends")
+  backendsCmd->add_option("--driver", backendsDriver, "Probe only this driver: a Mesa driver on the GL backends, swiftshader on vulkan")
       ->check(mesaDriverName);
   // Started by `backends` only: one GL driver's probe (backends/gl/probe_in_child.h).
   auto* probeDriverCmd = cli.add_subcommand("probe-driver", "");
@@ -118,7 +118,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   runCmd->add_flag("--flakes-fail", run.flakesFail, "A Flake (failed, then passed on a retry) fails the run");
   runCmd->add_option("--driver", run.driver,
-                     "GL combinations: run them on this Mesa Gallium driver (llvmpipe, softpipe, zink, ...)")
+                     "Run the GL combinations on this Mesa Gallium driver (llvmpipe, softpipe, zink, ...), "
+                     "or the Vulkan one on swiftshader")
       ->check(mesaDriverName);
   // Selection by name (SPEC 8): decided before sharding and before any worker starts.
   runCmd->add_option("--include", run.includes,
