@@ -61,6 +61,24 @@ BrdfColourErrors brdfColourErrors(const Object& object) {
   return e;
 }
 
+// How far vertex snapping may move the surface point a pixel centre sees
+// (tolerance_model.h), along the surface: the diagonal of the square of
+// half-side `vertexSnap` pixels across the view axis at p's depth, stretched
+// by the surface's slope to the ray. A surface seen edge-on would stretch it
+// without end; below a cosine of 1e-3 (0.06 degrees from edge-on) it is held
+// at 1000 times the square, which already takes every factor of the light
+// terms to the top of its range (light_evaluation.cpp).
+double snappedSurfaceMove(const CameraView& view, const Vec3& p, const Vec3& faceNormal, double vertexSnap) {
+  constexpr double kSmallestFacing = 1e-3;
+  const Vec3 toPoint = p - view.camera.position;
+  const Vec3 ray = view.camera.projection == Projection::Perspective && glm::length(toPoint) > 0
+                       ? glm::normalize(toPoint)
+                       : view.forward;
+  const double facing =
+      glm::length(faceNormal) > 0 ? std::abs(glm::dot(ray, glm::normalize(faceNormal))) : 1.0;
+  return std::numbers::sqrt2 * vertexSnap * view.pixelSizeAt(p) / std::max(facing, kSmallestFacing);
+}
+
 // Everything about a frame that does not change from pixel to pixel.
 struct FrameShading {
   const Frame& frame;
@@ -210,21 +228,8 @@ struct FrameShading {
     const Scene& scene = frame.scene();
     const bool deferred = scene.pipeline.path == RenderPath::Deferred;
     PositionContext where = contexts[tri.object];
-    // The square of half-side vertexSnap pixels (tolerance_model.h) on the
-    // surface: its diagonal across the view axis, stretched by the surface's
-    // slope to the ray.
-    const Vec3 faceNormal = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-    const Vec3 toPoint = p - frame.view.camera.position;
-    const Vec3 rayDirection = frame.view.camera.projection == Projection::Perspective && glm::length(toPoint) > 0
-                                  ? glm::normalize(toPoint)
-                                  : frame.view.forward;
-    const double facing = glm::length(faceNormal) > 0
-                              ? std::abs(glm::dot(rayDirection, glm::normalize(faceNormal)))
-                              : 1.0;
-    where.snapMove = std::numbers::sqrt2 * vertexSnap * frame.view.pixelSizeAt(p) / std::max(facing, 1e-3);
-    if (deferred)
-      where.reconstructionError =
-          reconstructionPositionError(frame.view, p, vertexSnap);
+    where.snapMove = snappedSurfaceMove(frame.view, p, glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0), vertexSnap);
+    if (deferred) where.reconstructionError = reconstructionPositionError(frame.view, p, vertexSnap);
     const MaterialBrdf& brdf = materials[tri.object];
     std::optional<LobeAtPoint> lobe;
     if (brdf.lobe) lobe = lobeAt(p, where, scene.objects[tri.object].smoothness);
