@@ -100,9 +100,9 @@ const reference::ReferenceImages& SceneReferences::reference(int index, int subT
   return it->second;
 }
 
-std::vector<imaging::Image> SceneReferences::shadowMapImages(int index) {
+std::vector<imaging::Image> SceneReferences::shadowMapImages(int index, int subPixelBits) {
   const lighting::Frame& f = frame(index);
-  const auto maps = renderer().shadowMaps(f);
+  const auto maps = renderer().shadowMaps(f, 0, subPixelBits);
   std::vector<imaging::Image> images;
   for (const auto* list : {&f.shadows.maps, &f.shadows.cubes})
     for (const lighting::ShadowProjection& projection : *list)
@@ -175,7 +175,7 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
     const bool keep = allPass && (!pass || tightness > worstTightness || check.frames.empty());
     if (keep && !pass && frame.shadows.any()) {
       check.evidenceShadowMaps.backend = backend.readShadowMaps();
-      check.evidenceShadowMaps.reference = references.shadowMapImages(f);
+      check.evidenceShadowMaps.reference = references.shadowMapImages(f, backend.device().subPixelPrecisionBits);
     }
     if (keep) {
       check.evidenceFrame = f;

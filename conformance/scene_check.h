@@ -60,9 +60,10 @@ class SceneReferences {
   // Time spent on references so far: rendering them, or reading them from the cache.
   double referenceMilliseconds() const { return referenceMs_; }
   int cacheHits() const { return cacheHits_; }  // references read from the cache so far
-  // SPEC 3.9's evidence: the reference's maps of `frame`, one image per view
-  // in lighting::shadowPassViews order (ReferenceShadowMap::viewImage).
-  std::vector<imaging::Image> shadowMapImages(int frame);
+  // SPEC 3.9's evidence: the reference's maps of `frame` for a device with
+  // `subPixelBits` (as reference() builds them), one image per view in
+  // lighting::shadowPassViews order (ReferenceShadowMap::viewImage).
+  std::vector<imaging::Image> shadowMapImages(int frame, int subPixelBits = reference::tolerance::kMinimumSubPixelBits);
 
  private:
   // Built on first use: a worker whose references all come from the cache
