@@ -17,9 +17,9 @@ namespace {
 // backends (a Mesa driver).
 std::vector<std::string> driversToProbe(const std::string& backend, const std::string& driver) {
   std::vector<std::string> tableDrivers;
-  bool takesMesaDriver = false, namesVulkanDriver = false;
+  bool takesMesaDriver = false;
+  const bool namesVulkanDriver = backends::vulkanDriverCombination(driver) != nullptr;
   for (const backends::BackendCombination& combination : backends::backendCombinations()) {
-    if (!driver.empty() && !combination.takesMesaDriver() && combination.driver == driver) namesVulkanDriver = true;
     if (combination.backend != backend) continue;
     takesMesaDriver = combination.takesMesaDriver();
     if (std::find(tableDrivers.begin(), tableDrivers.end(), combination.driver) == tableDrivers.end())

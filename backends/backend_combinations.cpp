@@ -39,6 +39,13 @@ BackendCombination combinationWithDriver(std::string_view backend, std::string_v
   return {std::string(backend) + "-" + std::string(driver), std::string(backend), std::string(driver)};
 }
 
+const BackendCombination* vulkanDriverCombination(std::string_view driver) {
+  if (driver.empty()) return nullptr;
+  for (const BackendCombination& c : backendCombinations())
+    if (!c.takesMesaDriver() && c.driver == driver) return &c;
+  return nullptr;
+}
+
 std::string combinationSuffixList() {
   std::string list;
   for (const BackendCombination& c : backendCombinations()) list += (list.empty() ? "" : ", ") + c.suffix;

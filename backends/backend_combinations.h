@@ -44,6 +44,10 @@ const BackendCombination* findCombination(std::string_view backend, std::string_
 // such as zink), so two runs on different drivers never share test names.
 BackendCombination combinationWithDriver(std::string_view backend, std::string_view driver);
 
+// The Vulkan combination whose driver `driver` names (swiftshader), or null
+// for any other name: a --driver that is not a Vulkan driver's is a Mesa one.
+const BackendCombination* vulkanDriverCombination(std::string_view driver);
+
 // "vulkan, gl-egl, ..." for messages that list what is accepted.
 std::string combinationSuffixList();
 

@@ -41,8 +41,8 @@ std::vector<BackendCombination> selectCombinations(const std::vector<std::string
   // A Vulkan driver's name (swiftshader) moves the Vulkan combinations to
   // it; any other name is a Mesa driver and moves the GL combinations. The
   // combinations of the other API keep their own driver.
-  const BackendCombination* vulkanDriver = backends::findCombination("vulkan", driver);
-  const bool namesVulkanDriver = vulkanDriver && vulkanDriver->driver == driver;
+  const BackendCombination* vulkanDriver = backends::vulkanDriverCombination(driver);
+  const bool namesVulkanDriver = vulkanDriver != nullptr;
   std::vector<BackendCombination> withDriver;
   bool anyMoved = false;
   for (const BackendCombination& c : chosen) {

@@ -50,6 +50,9 @@ TEST(CombinationTable, LookUps) {
   EXPECT_EQ(findCombination("vulkan", "softpipe"), nullptr);
   EXPECT_EQ(findCombination("vulkan", "swiftshader")->suffix, "vulkan-swiftshader");
   EXPECT_FALSE(findCombination("vulkan-swiftshader")->takesMesaDriver());
+  EXPECT_EQ(vulkanDriverCombination("swiftshader"), findCombination("vulkan-swiftshader"));
+  EXPECT_EQ(vulkanDriverCombination("softpipe"), nullptr);
+  EXPECT_EQ(vulkanDriverCombination(""), nullptr);
   EXPECT_TRUE(findCombination("gl-osmesa")->takesMesaDriver());
   EXPECT_EQ(findCombination("gl-egl-softpipe")->identifier(), "gl_egl_softpipe");
   EXPECT_EQ(combinationSuffixList(),
