@@ -1,4 +1,5 @@
 #include "app/commands.h"
+#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "baking/bake.h"
@@ -109,6 +110,7 @@ int runBakeCommand(const BakeArguments& args, std::ostream& out, std::ostream& e
           {o, fileStemOf(scene.objects[std::size_t(o)].name, o, taken), baking::mixedLightOverlap(*prepared, o)});
     }
 
+    imaging::requireImageModule();
     makeOutputDirectory(args.outDir);
     const fs::path dir(args.outDir);
     // bake.json, written last, marks a complete folder: an old one must not

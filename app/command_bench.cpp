@@ -1,6 +1,7 @@
 // `lightcts bench` and `lightcts bench compare`, and the hidden
 // `lightcts bench-worker` that `bench` starts once per backend combination.
 #include "app/commands.h"
+#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "imaging/atomic_file.h"
@@ -44,6 +45,7 @@ int runBenchCommand(const runner::BenchOptions& options, std::ostream& out, std:
     return kExitNotSupported;
 #else
     try {
+      imaging::requireImageModule();  // the error of each mode (compare_Yee) and the report's images
       return runner::runBench(options, out, err);
     } catch (const std::invalid_argument& e) {
       throw InputError(e.what());

@@ -2,6 +2,7 @@
 // and numbers (reference/light_budget.h computes them; budget_maps.h draws
 // them). docs/cli.md describes the files.
 #include "app/commands.h"
+#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "imaging/image_files.h"
@@ -27,6 +28,7 @@ int runBudgetCommand(const SceneArguments& args, bool allFrames, const std::stri
   return guardCommand(err, [&] {
     if (allFrames && args.frameGiven) throw InputError("--frame and --all-frames exclude each other");
     const SceneInput input = loadSceneInput(args);
+    imaging::requireImageModule();
     makeOutputDirectory(outDir);
     const reference::ReferenceRenderer renderer(input.prepared);
     // SPEC 5.5: an animated scene gives every frame unless --frame picks one.

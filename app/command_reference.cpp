@@ -1,6 +1,9 @@
 #include "app/commands.h"
+#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
+#include "conformance/reference_cache.h"
+#include "conformance/scene_check.h"
 #include "imaging/image_files.h"
 #include "reference/reference_renderer.h"
 
@@ -16,13 +19,25 @@ int runReferenceCommand(const SceneArguments& args, bool ideal, bool toleranceTe
                         std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     const SceneInput input = loadSceneInput(args);
+    imaging::requireImageModule();
     makeOutputDirectory(outDir);
-    const reference::ReferenceRenderer renderer(input.prepared);
-    reference::ReferenceOptions options;
-    options.ideal = ideal;
-    options.keepToleranceTerms = toleranceTerms;
-    options.bakedLightsRealtime = input.frame.scene().expect.against == lighting::CompareAgainst::Realtime;  // as compare does
-    const reference::ReferenceImages images = renderer.render(input.frame, options);
+    // The plain reference is the one every 4-bit device's comparison uses
+    // (SceneReferences::reference at the minimum bits), so it comes from and
+    // goes to the shared reference cache; --ideal and --tolerance-terms are
+    // rendered here and kept nowhere.
+    reference::ReferenceImages images;
+    if (!ideal && !toleranceTerms) {
+      conformance::SceneReferences references(
+          input.prepared, conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), args.scenePath,
+                                                        input.prepared->scene));
+      images = references.reference(args.frame);
+    } else {
+      reference::ReferenceOptions options;
+      options.ideal = ideal;
+      options.keepToleranceTerms = toleranceTerms;
+      options.bakedLightsRealtime = input.frame.scene().expect.against == lighting::CompareAgainst::Realtime;  // as compare does
+      images = reference::ReferenceRenderer(input.prepared).render(input.frame, options);
+    }
     const std::filesystem::path dir(outDir);
     imaging::writeExr((dir / "reference.exr").string(), images.value);
     imaging::writeExr((dir / "tolerance.exr").string(), images.tolerance);

@@ -1,6 +1,7 @@
 // `lightcts render` and `lightcts compare` (SPEC 8).
 #include "app/backend_choice.h"
 #include "app/commands.h"
+#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "backends/expected_driver.h"
@@ -54,6 +55,7 @@ int runRenderCommand(const SceneArguments& args, const BackendArguments& backend
     Rendered rendered;
     if (int status = renderOnBackend(args, backend, err, rendered); status != kExitSuccess) return status;
     const std::filesystem::path parent = std::filesystem::path(outFile).parent_path();
+    imaging::requireImageModule();
     if (!parent.empty()) makeOutputDirectory(parent.string());
     imaging::writeExr(outFile, rendered.image);
     return kExitSuccess;
@@ -61,7 +63,7 @@ int runRenderCommand(const SceneArguments& args, const BackendArguments& backend
 }
 
 int runCompareCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& evidenceDir,
-                      std::ostream& out, std::ostream& err) {
+                      bool writeEvidence, std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     const SceneInput input = loadSceneInput(args);
     checkModeDraws(input.frame, backend);  // a scene the mode cannot draw is bad input (exit 2), before any driver
@@ -99,7 +101,9 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
       out << "  error against ray-traced shadows (--ideal, information, not a verdict): "
           << check.frames.front().idealError << '\n';
     if (check.verdict == comparison::Verdict::Pass) return kExitSuccess;
+    if (!writeEvidence) return kExitConformanceFailure;
     const std::string dir = evidenceDir.empty() ? "lightcts-evidence/" + name : evidenceDir;
+    imaging::requireImageModule();  // the evidence is images: no half-written folder without it
     comparison::writeEvidence(dir, check.evidence().comparison, check.evidenceResult, check.evidenceReference, name,
                               &check.evidenceShadowMaps);
     out << "evidence: " << dir << " (frame " << check.evidenceFrame << "); open " << dir

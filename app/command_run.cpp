@@ -1,6 +1,7 @@
 // `lightcts run` (SPEC 8), the hidden `lightcts worker` it starts, and
 // `lightcts merge` of its shards (docs/ci.md).
 #include "app/commands.h"
+#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "conformance/reference_cache.h"
@@ -18,6 +19,9 @@ namespace app {
 int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     try {
+      // The workers' evidence and the report are images: a missing module
+      // stops the run before any worker starts.
+      if (!options.listOnly) imaging::requireImageModule();
       return runner::runSuite(options, out, err);
     } catch (const std::invalid_argument& e) {
       throw InputError(e.what());  // unknown backend or mutant, bad --timeout
@@ -28,6 +32,7 @@ int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::o
 int runMergeCommand(const runner::MergeOptions& options, std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
     try {
+      imaging::requireImageModule();  // the merged report's images
       return runner::mergeRuns(options, out);
     } catch (const runner::MergeRefused& e) {
       throw InputError(std::string("merge: ") + e.what());

@@ -67,9 +67,10 @@ struct BackendArguments {
 int runRenderCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& outFile,
                      std::ostream& out, std::ostream& err);
 // Evidence of a failure goes to `evidenceDir`, or when empty to
-// lightcts-evidence/<group>.<name>.<backend> under the current folder.
+// lightcts-evidence/<group>.<name>.<backend> under the current folder;
+// nowhere with writeEvidence false (--no-evidence: the verdict and numbers only).
 int runCompareCommand(const SceneArguments& args, const BackendArguments& backend, const std::string& evidenceDir,
-                      std::ostream& out, std::ostream& err);
+                      bool writeEvidence, std::ostream& out, std::ostream& err);
 // `run` checks its options (unknown backend or mutant, bad scene: exit 2)
 // before any worker starts.
 int runSuiteCommand(const runner::RunOptions& options, std::ostream& out, std::ostream& err);

@@ -97,6 +97,9 @@ int main(int argc, char** argv) {
   std::string evidenceDir;
   compareCmd->add_option("--evidence", evidenceDir,
                          "Folder for the evidence of a failure (default: lightcts-evidence/<group>.<name>.<backend>)");
+  bool noEvidence = false;
+  compareCmd->add_flag("--no-evidence", noEvidence, "Write no evidence of a failure: the verdict and numbers only")
+      ->excludes(compareCmd->get_option("--evidence"));
   auto* runCmd = cli.add_subcommand("run", "Run the whole suite: results.json, junit.xml, report/index.html");
   runCmd->add_option("--backend", run.backends,
                      "Backends to run: an API backend (each of its drivers) or one combination: " +
@@ -210,7 +213,7 @@ int main(int argc, char** argv) {
   }
   if (*renderCmd) return app::runRenderCommand(scene, backend, out, o, e);
   scene.frameGiven = compareCmd->get_option("--frame")->count() > 0;
-  if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, o, e);
+  if (*compareCmd) return app::runCompareCommand(scene, backend, evidenceDir, !noEvidence, o, e);
   if (*bakeCmd) return app::runBakeCommand(bake, o, e);
   if (*runCompareCmd) {
     for (const CLI::Option* option : runCmd->get_options())

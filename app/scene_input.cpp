@@ -1,4 +1,5 @@
 #include "app/scene_input.h"
+#include "imaging/image_codec_loader.h"
 
 #include "app/exit_status.h"
 #include "backends/backend.h"
@@ -39,6 +40,9 @@ int guardCommand(std::ostream& err, const std::function<int()>& body) {
   } catch (const InputError& e) {
     err << "lightcts: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const imaging::ImageModuleError& e) {
+    err << "lightcts: " << e.what() << "\n";
+    return kExitInternalError;
   } catch (const imaging::ImageFileError& e) {
     err << "lightcts: " << e.what() << "\n";
     return kExitBadInput;

@@ -2,8 +2,7 @@
 
 #include "comparison/evidence_viewer_page.h"  // generated: the page's text (cmake/embedded_text_header.cmake)
 #include "imaging/atomic_file.h"
-
-#include <OpenImageIO/strutil.h>
+#include "imaging/image_codec_loader.h"
 
 #include <bit>
 #include <cstring>
@@ -28,7 +27,7 @@ std::string base64Channels(const imaging::Image& image, int first, int channels)
       for (int c = 0; c < channels; ++c) values.push_back(image.at(x, y, first + c));
   std::string bytes(values.size() * sizeof(float), '\0');
   std::memcpy(bytes.data(), values.data(), bytes.size());
-  return OIIO::Strutil::base64_encode(bytes);
+  return imaging::imageCodec().base64(bytes);  // OpenImageIO's encoder, in the image module
 }
 
 nlohmann::ordered_json imageJson(const imaging::Image& image, int first, int channels) {

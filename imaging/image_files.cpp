@@ -1,9 +1,7 @@
 #include "imaging/image_files.h"
 
 #include "imaging/atomic_file.h"
-
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imageio.h>
+#include "imaging/image_codec_loader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,17 +14,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Writes through OIIO to a temporary beside `path` (atomic_file.h), renamed
-// over `path` when complete. OIIO picks the format from the extension, which
-// the temporary name keeps.
-void writeAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc format,
+// Writes through the image module to a temporary beside `path`
+// (atomic_file.h), renamed over `path` when complete. The module picks the
+// format from the extension, which the temporary name keeps.
+void writeAtomically(const std::string& path, int width, int height, int channels, SampleType type,
                      const void* pixels) {
+  ImageCodec& codec = imageCodec();  // loaded before any temporary exists
   try {
     writeThroughTemporary(path, [&](const fs::path& temporary) {
-      auto out = OIIO::ImageOutput::create(temporary.string());
-      if (!out) throw ImageFileError("cannot write " + path + ": " + OIIO::geterror());
-      if (!out->open(temporary.string(), spec) || !out->write_image(format, pixels) || !out->close())
-        throw ImageFileError("cannot write " + path + ": " + out->geterror());
+      const std::string error = codec.write(temporary.string(), width, height, channels, type, pixels);
+      if (!error.empty()) throw ImageFileError("cannot write " + path + ": " + error);
     });
   } catch (const ImageFileError&) {
     throw;
@@ -42,34 +39,29 @@ double toneMapToSrgb(double linear) {
   return mapped <= 0.0031308 ? 12.92 * mapped : 1.055 * std::pow(mapped, 1.0 / 2.4) - 0.055;
 }
 
-}  // namespace
-
-void writeExr(const std::string& path, const Image& image) {
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
-  spec.attribute("compression", "zip");
-  writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, image.pixels.data());
-}
-
-Image readExr(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw ImageFileError("cannot read " + path + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  Image image(spec.width, spec.height, spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw ImageFileError("cannot read " + path + ": " + in->geterror());
+Image readFloat(const std::string& path, ChannelChoice channels) {
+  Image image;
+  const std::string error = imageCodec().readFloat(path, channels, image);
+  if (!error.empty()) throw ImageFileError("cannot read " + path + ": " + error);
   return image;
 }
 
-Image readDataChannel(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw ImageFileError("cannot read " + path + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  const int channel = spec.alpha_channel >= 0 ? spec.alpha_channel : 0;
-  Image image(spec.width, spec.height, 1);
-  // Read as stored: OIIO converts UNORM levels to floats n / 255 and applies
-  // no colour transform unless asked to.
-  if (!in->read_image(0, 0, channel, channel + 1, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw ImageFileError("cannot read " + path + ": " + in->geterror());
+}  // namespace
+
+void writeExr(const std::string& path, const Image& image) {
+  writeAtomically(path, image.width, image.height, image.channels, SampleType::Float32, image.pixels.data());
+}
+
+Image readExr(const std::string& path) { return readFloat(path, ChannelChoice::All); }
+
+// Read as stored: the module converts UNORM levels to floats n / 255 and
+// applies no colour transform.
+Image readDataChannel(const std::string& path) { return readFloat(path, ChannelChoice::AlphaOrFirst); }
+
+Image8 readImage8(const std::string& path) {
+  Image8 image;
+  const std::string error = imageCodec().readUInt8(path, image);
+  if (!error.empty()) throw ImageFileError("cannot read " + path + ": " + error);
   return image;
 }
 
@@ -78,8 +70,7 @@ void writePng8(const std::string& path, int width, int height, int channels, con
     throw ImageFileError("cannot write " + path + ": " + std::to_string(bytes.size()) + " bytes for a " +
                          std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(channels) +
                          " image");
-  const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
-  writeAtomically(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+  writeAtomically(path, width, height, channels, SampleType::UInt8, bytes.data());
 }
 
 void writePngPreview(const std::string& path, const Image& image) {
@@ -91,8 +82,7 @@ void writePngPreview(const std::string& path, const Image& image) {
         const double v = toneMapToSrgb(image.at(x, y, std::min(c, channels - 1)));
         bytes[(std::size_t(y) * image.width + x) * 3 + c] = std::uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
       }
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  writeAtomically(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+  writeAtomically(path, image.width, image.height, 3, SampleType::UInt8, bytes.data());
 }
 
 }  // namespace imaging

@@ -1,9 +1,11 @@
-// Writing and reading images with OpenImageIO. Writes go to a temporary file
+// Writing and reading images, through the image module (image_codec.h:
+// OpenImageIO, loaded on first use; ImageModuleError when it cannot be). Writes go to a temporary file
 // in the same folder and are renamed into place (atomic_file.h), so a failed
 // or interrupted write never leaves a half-written image behind.
 #pragma once
 
 #include "imaging/image.h"
+#include "imaging/image_codec.h"
 
 #include <cstdint>
 #include <stdexcept>
@@ -20,6 +22,9 @@ class ImageFileError : public std::runtime_error {
 // Float EXR with the image's channels (3: RGB, 4: RGBA), row 0 at the top.
 void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);
+
+// Every channel of a file as its 8-bit levels (PNG's as stored).
+Image8 readImage8(const std::string& path);
 
 // One channel of a PNG or EXR as data (SPEC 3.10's cookies): the alpha
 // channel when the file has one, else the first; PNG's 8-bit levels n become

@@ -16,7 +16,6 @@ foreach(entry ${mutant_killers})
     add_test(NAME mutants.${mutant}.${suffix}
              COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DBACKEND=${backend} -DDRIVER=${driver}
                      -DMUTANT=${mutant} -DSCENES=${mutant_scenes} -DSCENES_ROOT=${CMAKE_CURRENT_SOURCE_DIR}/scenes
-                     -DEVIDENCE_DIR=${CMAKE_BINARY_DIR}/test-out/mutants/${mutant}.${suffix}
                      -P ${CMAKE_CURRENT_SOURCE_DIR}/mutant_is_killed.cmake)
     set_tests_properties(mutants.${mutant}.${suffix} PROPERTIES LABELS "mutants;${suffix}"
       SKIP_REGULAR_EXPRESSION "NotSupported" ENVIRONMENT "${backend_test_environment}")

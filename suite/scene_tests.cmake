@@ -58,7 +58,9 @@ foreach(scene ${scene_files})
   # The reference renders and writes its images (SPEC 8).
   add_test(NAME ${group}.${name}.reference
            COMMAND lightcts reference --scene ${scene} --out ${CMAKE_BINARY_DIR}/test-out/reference/${group}/${name})
-  set_tests_properties(${group}.${name}.reference PROPERTIES LABELS "reference;${group}")
+  # It reads and fills the build's reference cache, as the 4-bit devices' comparisons do.
+  set_tests_properties(${group}.${name}.reference PROPERTIES LABELS "reference;${group}"
+    ENVIRONMENT "LIGHTCTS_CACHE_DIR=${CMAKE_BINARY_DIR}/cache")
   # The scene on each backend against the reference (SPEC 7): exit 3 (no
   # device or driver) is a skip; Vulkan validation is on and any layer
   # message fails.

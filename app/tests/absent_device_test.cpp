@@ -16,14 +16,14 @@ const std::string kScene = std::string(LIGHTCTS_SOURCE_DIR) + "/suite/scenes/att
 
 TEST(AbsentDevice, VulkanDeviceThatIsNotHereIsNotSupported) {
   std::ostringstream out, err;
-  EXPECT_EQ(runCompareCommand({kScene, 0}, {.backend = "vulkan", .device = "no-such-device"}, "", out, err),
+  EXPECT_EQ(runCompareCommand({kScene, 0}, {.backend = "vulkan", .device = "no-such-device"}, "", true, out, err),
             kExitNotSupported)
       << err.str();
 }
 
 TEST(AbsentDevice, OsmesaHasNoDeviceIndexAndIsNotSupported) {
   std::ostringstream out, err;
-  EXPECT_EQ(runCompareCommand({kScene, 0}, {.backend = "gl-osmesa", .device = "0"}, "", out, err),
+  EXPECT_EQ(runCompareCommand({kScene, 0}, {.backend = "gl-osmesa", .device = "0"}, "", true, out, err),
             kExitNotSupported)
       << err.str();
 }

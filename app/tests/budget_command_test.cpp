@@ -3,13 +3,13 @@
 // by SPEC: 0, 1, 2, 4, 8, 16, 32, 64+), the JSON's per-light reasons, every
 // frame of an animated scene, and bad input.
 #include "reports/budget_maps.h"
+#include "imaging/image_files.h"
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 #include "reference/light_budget.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -48,14 +48,11 @@ class BudgetCommand : public ::testing::Test {
 };
 
 std::vector<std::uint8_t> readPng(const fs::path& path, int& width, int& height) {
-  auto in = OIIO::ImageInput::open(path.string());
-  EXPECT_TRUE(in) << path;
-  if (!in) return {};
-  width = in->spec().width;
-  height = in->spec().height;
-  std::vector<std::uint8_t> rgb(std::size_t(width) * height * 3);
-  in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, rgb.data());
-  return rgb;
+  const imaging::Image8 image = imaging::readImage8(path.string());
+  width = image.width;
+  height = image.height;
+  EXPECT_EQ(image.channels, 3) << path;
+  return image.levels;
 }
 
 nlohmann::json readJson(const fs::path& path) {

@@ -141,7 +141,7 @@ TEST_F(CommandsTest, MissingSceneFileExitsTwo) {
 // the drivers and so is labelled `driver`.)
 TEST_F(CommandsTest, UnknownBackendExitsTwo) {
   const std::string scene = writeScene(kSelectionScene);
-  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "metal"}, "", out_, err_), kExitBadInput);
+  EXPECT_EQ(runCompareCommand({scene, 0}, {.backend = "metal"}, "", true, out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("unknown backend 'metal'"), std::string::npos);
 }
 

@@ -1,12 +1,16 @@
 // Every suite scene (frame 0) rendered on two backends, with its reference:
-// the loop the tests that compare two backends, or two variants of one, share.
+// the loop of the tests that compare two backends, or two variants of one.
+// The reference is the one at the minimum bits (4), the loosest a conformant
+// device gets, from the build's reference cache ($LIGHTCTS_CACHE_DIR), which
+// the scenes' own tests fill: computed once per scene, not once per test.
 #pragma once
 
 #include "backends/backend.h"
 #include "baking/bake.h"
+#include "conformance/reference_cache.h"
+#include "conformance/scene_check.h"
 #include "lighting/frame.h"
 #include "lighting/scene_loader.h"
-#include "reference/reference_renderer.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -35,9 +39,11 @@ inline int forEachSuiteScene(const std::filesystem::path& scenesDir, Backend& fi
       if (file.path().extension() == ".json") files.push_back(file.path());
   std::sort(files.begin(), files.end());
   for (const std::filesystem::path& file : files) {
-    const auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(file.string()));
-    const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
-    check({file, first.render(frame), second.render(frame), reference::ReferenceRenderer(prepared).render(frame)});
+    lighting::Scene scene = lighting::loadSceneFile(file.string());
+    const auto caching = conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), file, scene);
+    conformance::SceneReferences references(baking::prepareBakedScene(std::move(scene)), caching);
+    const lighting::Frame& frame = references.frame(0);
+    check({file, first.render(frame), second.render(frame), references.reference(0)});
   }
   return int(files.size());
 }

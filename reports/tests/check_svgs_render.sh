@@ -7,10 +7,12 @@
 #
 #   check_svgs_render.sh DIR
 #
-# The pages have no JavaScript, so each is checked as a copy in a temporary
-# folder with a small script added before </body> that, after the load
-# event, writes its findings into the page, which --dump-dom prints. DIR is
-# not written to.
+# One Chromium for all the pages: a driver page in a temporary folder loads
+# each page, unchanged, in an 800x600 iframe (headless Chromium's window
+# size) and, after each load event, checks its plots through the frame's
+# document (--allow-file-access-from-files lets a file:// page read another's);
+# it writes its findings into itself, which --dump-dom prints. DIR is not
+# written to.
 #
 # Exit: 0 every plot rendered; 1 a plot did not, there is none, or the check
 # could not run; 2 usage; 77 chromium is not installed (a skip).
@@ -30,10 +32,23 @@ pages=("$dir"/*.html)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+# The pages' URLs, as a JavaScript array (file names are the report's own:
+# letters, digits, '.', '-' and '_').
+urls=""
+for page in "${pages[@]}"; do
+  name=$(basename "$page")
+  case "$name" in *[!A-Za-z0-9._-]*) echo "FAIL: unexpected page name $name" >&2; exit 1 ;; esac
+  urls="$urls\"file://$dir/$name\","
+done
+
 # The markers are split in the script so that only its output matches them.
-checker='<script>
-window.addEventListener("load", function () {
-  var svgs = Array.prototype.slice.call(document.querySelectorAll("svg"));
+cat > "$work/check.html" <<EOF
+<!DOCTYPE html><html><body>
+<script>
+var urls = [${urls%,}];
+var lines = new Array(urls.length), pending = urls.length;
+function check(doc) {
+  var svgs = Array.prototype.slice.call(doc.querySelectorAll("svg"));
   var broken = [];
   svgs.forEach(function (s, i) {
     var why = [];
@@ -45,42 +60,63 @@ window.addEventListener("load", function () {
     if (drawn.length === 0) why.push("nothing drawn (" + shapes.length + " shapes, all empty)");
     if (why.length) broken.push("BROKEN SVG #" + i + " \"" + (s.getAttribute("aria-label") || "") + "\": " + why.join("; "));
   });
+  return "total=" + svgs.length + " broken=" + broken.length + "\n" + broken.map(function (b) { return b + "\n"; }).join("");
+}
+function finish() {
   var out = document.createElement("pre");
-  out.textContent = "LIGHTCTS-" + "SVGS total=" + svgs.length + " broken=" + broken.length + "\n" +
-    broken.map(function (b) { return b + "\n"; }).join("") + "LIGHTCTS-" + "SVGS-END";
+  out.textContent = "LIGHTCTS-" + "SVGS\n" + lines.join("") + "LIGHTCTS-" + "SVGS-END";
   document.body.appendChild(out);
+}
+urls.forEach(function (url, k) {
+  var frame = document.createElement("iframe");
+  frame.style.width = "800px";
+  frame.style.height = "600px";
+  frame.addEventListener("load", function () {
+    var name = url.substring(url.lastIndexOf("/") + 1);
+    try {
+      lines[k] = "PAGE " + name + " " + check(frame.contentDocument);
+    } catch (e) {
+      lines[k] = "PAGE " + name + " unreadable: " + e + "\n";
+    }
+    if (--pending === 0) finish();
+  });
+  frame.src = url;
+  document.body.appendChild(frame);
 });
-</script>'
+</script>
+</body></html>
+EOF
 
 started=$(date +%s%N)
+set +e
+timeout 90 "$chromium" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
+  --no-default-browser-check --user-data-dir="$work/profile" --allow-file-access-from-files \
+  --virtual-time-budget=5000 --dump-dom "file://$work/check.html" > "$work/dom.html" 2> "$work/chromium.log"
+status=$?
+set -e
+result=$(sed -n '/LIGHTCTS-SVGS$/,/LIGHTCTS-SVGS-END/p' "$work/dom.html" | sed 's/<[^>]*>//g')
+if [ -z "$result" ]; then
+  echo "FAIL: chromium (exit $status) did not report on the plots of $dir" >&2
+  tail -20 "$work/chromium.log" >&2
+  exit 1
+fi
+
 all_total=0
 all_broken=0
 failed=0
 for page in "${pages[@]}"; do
   name=$(basename "$page")
-  grep -qi '</body>' "$page" || { echo "FAIL: $name has no </body>" >&2; failed=1; continue; }
-  CHECKER="$checker" awk '
-    !done_script && (at = index($0, "</body>")) {
-      $0 = substr($0, 1, at - 1) ENVIRON["CHECKER"] "\n" substr($0, at); done_script = 1 }
-    { print }' "$page" > "$work/check.html"
-  set +e
-  timeout 90 "$chromium" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
-    --no-default-browser-check --user-data-dir="$work/profile" --virtual-time-budget=5000 --dump-dom \
-    "file://$work/check.html" > "$work/dom.html" 2> "$work/chromium.log"
-  status=$?
-  set -e
-  result=$(sed -n '/LIGHTCTS-SVGS total=[0-9]/,/LIGHTCTS-SVGS-END/p' "$work/dom.html" | sed 's/<[^>]*>//g')
-  if [ -z "$result" ]; then
-    echo "FAIL: chromium (exit $status) did not report on the plots of $name" >&2
-    tail -20 "$work/chromium.log" >&2
+  line=$(echo "$result" | grep "^PAGE $name " || true)
+  if [ -z "$line" ] || ! echo "$line" | grep -q ' total=[0-9]* broken=[0-9]*$'; then
+    echo "FAIL: chromium did not report on the plots of $name: $line" >&2
     failed=1
     continue
   fi
-  total=$(echo "$result" | sed -n 's/.*total=\([0-9]*\).*/\1/p' | head -1)
-  broken=$(echo "$result" | sed -n 's/.*broken=\([0-9]*\).*/\1/p' | head -1)
+  total=$(echo "$line" | sed -n 's/.* total=\([0-9]*\).*/\1/p')
+  broken=$(echo "$line" | sed -n 's/.* broken=\([0-9]*\).*/\1/p')
   in_source=$( (grep -o '<svg[ >]' "$page" || true) | wc -l)
   echo "$name: $total plots, $broken broken"
-  echo "$result" | grep '^BROKEN SVG' || true
+  echo "$result" | awk -v page="PAGE $name " 'index($0, page) == 1 { on = 1; next } /^PAGE / { on = 0 } on && /^BROKEN SVG/'
   if [ "$total" != "$in_source" ]; then
     echo "FAIL: $name has $in_source <svg> tags but chromium saw $total" >&2
     failed=1

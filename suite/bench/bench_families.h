@@ -54,8 +54,9 @@ struct FieldModeSpec {
 // the deferred modes).
 std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPathsOnly = false);
 
-// The field's frames by mode name, made (and their loads traced) up front.
-using NamedFrames = std::vector<std::pair<std::string, std::shared_ptr<const BenchFrame>>>;
+// The field's frames by mode name, each made (its scene built and its load
+// traced) when a benchmark the filter keeps first needs it.
+using NamedFrames = std::vector<std::pair<std::string, LazyFrame>>;
 struct FieldModes {
   NamedFrames shipped, full, pipeline;  // specialised shaders, full shader, pipeline benchmarks
 };

@@ -36,6 +36,17 @@ bool makeOnce(benchmark::State& st, Made& made, const Make& make) {
   return true;
 }
 
+// The lazy frame, made on the benchmark's first run; null (the benchmark
+// skipped with the message) when making it fails.
+const BenchFrame* madeFrame(benchmark::State& st, LazyBenchFrame& bench) {
+  try {
+    return &bench.get();
+  } catch (const std::exception& e) {
+    st.SkipWithError(e.what());
+    return nullptr;
+  }
+}
+
 }  // namespace
 
 // --quick proves each benchmark runs and measures nothing: one
@@ -63,26 +74,15 @@ std::string Registrar::name(const char* kind, const std::string& scene, const st
   return text;
 }
 
-void Registrar::frame(const std::string& scene, const std::string& mode, const std::string& x,
-                      const std::shared_ptr<const BenchFrame>& bench, bool withReadback) {
+void Registrar::frame(const std::string& scene, const std::string& mode, const std::string& x, const LazyFrame& bench,
+                      bool withReadback) {
   auto run = run_;
   const std::string benchmarkName = name(withReadback ? "frame_readback" : "frame", scene, mode, x);
-  if (!bench->spec.referenceKey.empty()) errorCandidates_.push_back({benchmarkName, bench, nullptr, nullptr});
+  if (bench->hasError()) errorCandidates_.push_back({benchmarkName, bench});
   configure(benchmark::RegisterBenchmark(benchmarkName.c_str(),
                                          [run, bench, withReadback](benchmark::State& st) {
-                                           timeFrame(st, *run, *bench, withReadback);
-                                         }),
-            frameTiming_);
-}
-
-void Registrar::lazyFrame(const std::string& scene, const std::string& mode, MakeBench make) {
-  auto run = run_;
-  auto made = std::make_shared<std::shared_ptr<const BenchFrame>>();
-  const std::string benchmarkName = name("frame", scene, mode, "");
-  errorCandidates_.push_back({benchmarkName, nullptr, made, make});  // every lazy frame has an error
-  configure(benchmark::RegisterBenchmark(benchmarkName.c_str(),
-                                         [run, made, make = std::move(make)](benchmark::State& st) {
-                                           if (makeOnce(st, *made, make)) timeFrame(st, *run, **made, false);
+                                           if (const BenchFrame* made = madeFrame(st, *bench))
+                                             timeFrame(st, *run, *made, withReadback);
                                          }),
             frameTiming_);
 }
@@ -97,11 +97,13 @@ void Registrar::upload(const std::string& scene, const std::string& mode, const 
             pipelineTiming_);
 }
 
-void Registrar::pipeline(const std::string& scene, const std::string& mode,
-                         const std::shared_ptr<const BenchFrame>& bench) {
+void Registrar::pipeline(const std::string& scene, const std::string& mode, const LazyFrame& bench) {
   auto run = run_;
   configure(benchmark::RegisterBenchmark(name("pipeline", scene, mode, "").c_str(),
-                                         [run, bench](benchmark::State& st) { timePipeline(st, *run, *bench); }),
+                                         [run, bench](benchmark::State& st) {
+                                           if (const BenchFrame* made = madeFrame(st, *bench))
+                                             timePipeline(st, *run, *made);
+                                         }),
             pipelineTiming_);
 }
 

@@ -27,20 +27,16 @@ class Registrar {
  public:
   explicit Registrar(std::shared_ptr<RunState> run);
 
-  // frame/... or, withReadback, frame_readback/...; `x` empty: no /<x>.
-  void frame(const std::string& scene, const std::string& mode, const std::string& x,
-             const std::shared_ptr<const BenchFrame>& bench, bool withReadback);
+  // frame/... or, withReadback, frame_readback/...; `x` empty: no /<x>. The
+  // frame is made on the benchmark's first run (or by the error prepass),
+  // only when the filter selects it.
+  void frame(const std::string& scene, const std::string& mode, const std::string& x, const LazyFrame& bench,
+             bool withReadback);
 
-  // A frame benchmark whose frame is made on its first run, not here: the
-  // lightmap modes bake (several times) and trace their load only when the
-  // filter selects them, so the smoke tests do not pay for every resolution.
-  using MakeBench = std::function<std::shared_ptr<const BenchFrame>()>;
-  void lazyFrame(const std::string& scene, const std::string& mode, MakeBench make);
-
-  void pipeline(const std::string& scene, const std::string& mode, const std::shared_ptr<const BenchFrame>& bench);
+  void pipeline(const std::string& scene, const std::string& mode, const LazyFrame& bench);
 
   // upload/...: the textures of `make`'s frame (made on the first run, as
-  // lazyFrame's) uploaded by the shipped-shader backend (timeUpload).
+  // a LazyFrame is) uploaded by the shipped-shader backend (timeUpload).
   using MakeFrame = std::function<lighting::Frame()>;
   void upload(const std::string& scene, const std::string& mode, const std::string& x, MakeFrame make);
 

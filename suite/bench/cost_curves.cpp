@@ -12,14 +12,17 @@
 namespace bench {
 namespace {
 
-// A curve point of the synthetic field; `clusters` for the clustered mode.
-std::shared_ptr<const BenchFrame> curveFrame(const FieldSpec& field, const std::string& name,
-                                             std::optional<lighting::ClusterGridSpec> clusters = std::nullopt) {
-  BenchFrameSpec spec;
-  spec.prepared = baking::prepareBakedScene(fieldScene(field, name));
-  spec.everyLightInView = true;
-  spec.clusters = clusters;
-  return makeBenchFrame(std::move(spec));
+// A curve point of the synthetic field, made when a benchmark the filter
+// keeps first needs it; `clusters` for the clustered mode.
+LazyFrame curveFrame(const FieldSpec& field, const std::string& name,
+                     std::optional<lighting::ClusterGridSpec> clusters = std::nullopt) {
+  return lazyBenchFrame(false, [field, name, clusters] {
+    BenchFrameSpec spec;
+    spec.prepared = baking::prepareBakedScene(fieldScene(field, name));
+    spec.everyLightInView = true;
+    spec.clusters = clusters;
+    return makeBenchFrame(std::move(spec));
+  });
 }
 
 std::string sizeName(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }

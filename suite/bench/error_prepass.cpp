@@ -34,14 +34,14 @@ void precomputeErrors(RunState& run, const std::vector<ErrorCandidate>& candidat
   std::map<std::string, std::size_t> inFlight;                // content key -> index in pending
   std::vector<std::string> contents;                          // per pending: its content key
   std::vector<std::pair<std::string, std::size_t>> sharing;  // error key -> the pending it equals
-  // The lazy frames first: their bakes are timed (bake_ms), so nothing else runs yet.
-  std::vector<std::shared_ptr<const BenchFrame>> frames;
+  // The frames first, the selected ones only: the lightmap modes' bakes are
+  // timed (bake_ms), so nothing else runs yet.
+  std::vector<const BenchFrame*> frames;
   for (const ErrorCandidate& candidate : candidates) {
-    frames.push_back(candidate.bench);
-    if (frames.back() || !candidate.made || !filterSelects(filter, candidate.name)) continue;
+    frames.push_back(nullptr);
+    if (!filterSelects(filter, candidate.name)) continue;
     try {
-      if (!*candidate.made) *candidate.made = candidate.make();
-      frames.back() = *candidate.made;
+      frames.back() = &candidate.bench->get();
     } catch (const std::exception&) {
       // its benchmark makes it again and reports the failure
     }

@@ -8,9 +8,9 @@
 // on the main thread, and its error is computed on a pool of one thread per
 // core while the next frame draws. Nothing is timed meanwhile; a GL backend
 // makes its context current on every call, so drawing here in any order
-// leaves the timed benchmarks nothing to undo. The lazy frames the filter
-// selects (the lightmap modes, which bake and time their bakes) are made
-// first, before any thread of the pool runs. The timed benchmarks then find
+// leaves the timed benchmarks nothing to undo. The frames the filter selects
+// are made first (LazyBenchFrame; the lightmap modes bake and time their
+// bakes), before any thread of the pool runs. The timed benchmarks then find
 // the error in RunState::errors; a failure here is left for the benchmark to
 // report.
 #pragma once
@@ -29,10 +29,7 @@ namespace bench {
 // (what --benchmark_filter sees, less Google Benchmark's suffixes) and frame.
 struct ErrorCandidate {
   std::string name;
-  std::shared_ptr<const BenchFrame> bench;  // null: a lazy frame (Registrar::lazyFrame)
-  // A lazy frame: made by `make` into *made, which its benchmark then uses.
-  std::shared_ptr<std::shared_ptr<const BenchFrame>> made;
-  std::function<std::shared_ptr<const BenchFrame>()> make;
+  LazyFrame bench;  // made here when the filter selects `name` (its benchmark then uses it)
 };
 
 // Whether Google Benchmark's --benchmark_filter `filter` (a regular

@@ -160,19 +160,21 @@ NamedFrames denseFieldModes(const RunState& run) {
   const FieldSize size = fieldSize(run);
   NamedFrames frames;
   for (const FrameMode mode : {FrameMode::AllLights, FrameMode::PerObject, FrameMode::Clustered}) {
-    FieldSpec field;
-    field.width = size.width;
-    field.height = size.height;
-    field.mode = mode;
-    field.rangeScale = kDenseFieldRangeScale;
-    BenchFrameSpec spec;
-    spec.prepared = prepareScene(fieldScene(field, scene + "-" + modeName(mode)));
-    spec.referenceKey = scene + "/srp";
-    spec.errorKey = scene + "/" + modeName(mode);
-    spec.everyLightInView = true;
-    if (mode == FrameMode::Clustered) spec.clusters = run.settings.clusterGrid;
-    if (mode == FrameMode::PerObject) spec.leastObjectLights = kDenseFieldLeastObjectLights;
-    frames.emplace_back(modeName(mode), makeBenchFrame(std::move(spec)));
+    frames.emplace_back(modeName(mode), lazyBenchFrame(true, [grid = run.settings.clusterGrid, scene, size, mode] {
+      FieldSpec field;
+      field.width = size.width;
+      field.height = size.height;
+      field.mode = mode;
+      field.rangeScale = kDenseFieldRangeScale;
+      BenchFrameSpec spec;
+      spec.prepared = prepareScene(fieldScene(field, scene + "-" + modeName(mode)));
+      spec.referenceKey = scene + "/srp";
+      spec.errorKey = scene + "/" + modeName(mode);
+      spec.everyLightInView = true;
+      if (mode == FrameMode::Clustered) spec.clusters = grid;
+      if (mode == FrameMode::PerObject) spec.leastObjectLights = kDenseFieldLeastObjectLights;
+      return makeBenchFrame(std::move(spec));
+    }));
   }
   return frames;
 }
@@ -191,23 +193,27 @@ FieldModes fieldModes(const RunState& run) {
     mode.field.width = size.width;
     mode.field.height = size.height;
     const FieldSpec& field = mode.field;
-    BenchFrameSpec spec;
-    spec.prepared = baking::prepareBakedScene(fieldScene(field, scene + "-" + mode.name));
-    spec.fullShader = mode.fullShader;
-    spec.referenceKey = referenceKeyOf(scene, mode);
-    spec.errorKey = scene + "/" + mode.name;
-    spec.everyLightInView = true;
-    if (field.mode == FrameMode::Clustered) spec.clusters = run.settings.clusterGrid;
-    if (deferredBufferOf(field.mode)) {
-      // The deferred modes share the srp reference of the forward field, made
-      // from that scene whichever mode runs first: a deferred scene's own
-      // reference includes its buffer's saturation (ldr8), which is part of
-      // the error a buffer costs.
-      FieldSpec forward = field;
-      forward.mode = FrameMode::AllLights;
-      spec.referencePrepared = prepareScene(fieldScene(forward, scene + "-forward-reference"));
-    }
-    std::shared_ptr<const BenchFrame> bench = makeBenchFrame(std::move(spec));
+    const std::string referenceKey = referenceKeyOf(scene, mode);
+    LazyFrame bench = lazyBenchFrame(!referenceKey.empty(), [grid = run.settings.clusterGrid, scene, mode, referenceKey] {
+      const FieldSpec& field = mode.field;
+      BenchFrameSpec spec;
+      spec.prepared = baking::prepareBakedScene(fieldScene(field, scene + "-" + mode.name));
+      spec.fullShader = mode.fullShader;
+      spec.referenceKey = referenceKey;
+      spec.errorKey = scene + "/" + mode.name;
+      spec.everyLightInView = true;
+      if (field.mode == FrameMode::Clustered) spec.clusters = grid;
+      if (deferredBufferOf(field.mode)) {
+        // The deferred modes share the srp reference of the forward field, made
+        // from that scene whichever mode runs first: a deferred scene's own
+        // reference includes its buffer's saturation (ldr8), which is part of
+        // the error a buffer costs.
+        FieldSpec forward = field;
+        forward.mode = FrameMode::AllLights;
+        spec.referencePrepared = prepareScene(fieldScene(forward, scene + "-forward-reference"));
+      }
+      return makeBenchFrame(std::move(spec));
+    });
     (mode.fullShader ? frames.full : frames.shipped).emplace_back(mode.name, bench);
     // Pipelines: all-lights only on a slow driver, a second context path and
     // with --quick. Of the shadow modes the first only: a map's size and

@@ -1,7 +1,6 @@
 #include "suite/bench/image_error.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "imaging/image_codec_loader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +16,7 @@ ImageError compareToIdeal(const imaging::Image& image, const imaging::Image& ide
   const int w = ideal.width, h = ideal.height;
   ImageError error;
   double sumSquares = 0;
-  // RGB copies for OpenImageIO: the reference, and the image with the
+  // RGB copies for the perceptual metric: the reference, and the image with the
   // don't-care pixels replaced by the reference.
   std::vector<float> a(std::size_t(w) * h * 3), b(a.size());
   for (int y = 0; y < h; ++y) {
@@ -55,12 +54,10 @@ ImageError compareToIdeal(const imaging::Image& image, const imaging::Image& ide
     error.psnrDb = error.rmse > 0 && error.peak > 0 ? 20.0 * std::log10(error.peak / error.rmse) : kPsnrOfExactMatch;
   }
 
-  const OIIO::ImageSpec spec(w, h, 3, OIIO::TypeDesc::FLOAT);
-  const OIIO::ImageBuf bufA(spec, a.data()), bufB(spec, b.data());
-  OIIO::ImageBufAlgo::CompareResults result{};  // compare_Yee fills maxerror and the worst pixel only
-  const int failing =
-      OIIO::ImageBufAlgo::compare_Yee(bufA, bufB, result, kPerceptualLuminance, kPerceptualFovDeg);
-  if (failing < 0) throw std::runtime_error("OpenImageIO compare_Yee failed: " + bufB.geterror());
+  std::string why;
+  const long failing = imaging::imageCodec().perceptualDifferences(a.data(), b.data(), w, h, kPerceptualLuminance,
+                                                                   kPerceptualFovDeg, why);
+  if (failing < 0) throw std::runtime_error("OpenImageIO compare_Yee failed: " + why);
   error.perceptualFail = double(failing + error.nonFinitePixels) / double(error.comparedPixels);
   return error;
 }

@@ -100,24 +100,32 @@ NamedFrames meshFieldModes(const RunState& run) {
   }
   const std::string scene = meshFieldSceneName(run);
   const FieldSize size = fieldSize(run);
-  const std::vector<Object> meshes = engines(size);
+  // The engines are imported once, by the first mode a filter keeps; the
+  // deferred modes' ideal is the forward field's scene.
+  const SharedOnDemand<std::vector<Object>> meshes([size] { return engines(size); });
+  const SharedOnDemand<std::shared_ptr<const PreparedScene>> forward([meshes, size, scene] {
+    return prepareScene(meshFieldScene(FrameMode::AllLights, size, meshes.get(), scene + "-" + modeName(FrameMode::AllLights)));
+  });
   NamedFrames frames;
-  std::shared_ptr<const PreparedScene> forward;  // the deferred modes' ideal is the forward field's
   const FrameMode modes[] = {FrameMode::AllLights,     FrameMode::PerObject,     FrameMode::Legacy4x4,
                              FrameMode::Clustered,     FrameMode::DeferredHdr32, FrameMode::DeferredHdr16,
                              FrameMode::DeferredLdr8};
   for (const FrameMode mode : modes) {
     if (run.settings.quick && mode != FrameMode::AllLights && mode != FrameMode::PerObject) continue;
-    BenchFrameSpec spec;
-    spec.prepared = prepareScene(meshFieldScene(mode, size, meshes, scene + "-" + modeName(mode)));
-    if (mode == FrameMode::AllLights) forward = spec.prepared;
-    const bool legacy = mode == FrameMode::Legacy4x4;
-    spec.referenceKey = scene + (legacy ? "/legacy" : "/srp");
-    if (deferredBufferOf(mode)) spec.referencePrepared = forward;
-    spec.errorKey = scene + "/" + modeName(mode);
-    spec.everyLightInView = true;
-    if (mode == FrameMode::Clustered) spec.clusters = run.settings.clusterGrid;
-    frames.emplace_back(modeName(mode), makeBenchFrame(std::move(spec)));
+    frames.emplace_back(modeName(mode), lazyBenchFrame(true, [grid = run.settings.clusterGrid, meshes, forward, size,
+                                                              scene, mode] {
+      BenchFrameSpec spec;
+      spec.prepared = mode == FrameMode::AllLights
+                          ? forward.get()
+                          : prepareScene(meshFieldScene(mode, size, meshes.get(), scene + "-" + modeName(mode)));
+      const bool legacy = mode == FrameMode::Legacy4x4;
+      spec.referenceKey = scene + (legacy ? "/legacy" : "/srp");
+      if (deferredBufferOf(mode)) spec.referencePrepared = forward.get();
+      spec.errorKey = scene + "/" + modeName(mode);
+      spec.everyLightInView = true;
+      if (mode == FrameMode::Clustered) spec.clusters = grid;
+      return makeBenchFrame(std::move(spec));
+    }));
   }
   return frames;
 }

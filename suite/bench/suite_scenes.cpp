@@ -25,12 +25,17 @@ void registerSuiteScenes(Registrar& r) {
   for (const conformance::SceneFile& file : files) {
     const std::string sceneId = file.caseName();
     try {
-      BenchFrameSpec spec;
-      lighting::Scene scene = lighting::loadSceneFile(file.path.string());
-      const std::string mode = modeName(frameModeOf(scene.pipeline));
-      spec.prepared = baking::prepareBakedScene(std::move(scene));  // suite scenes may have lightmaps
-      spec.referenceKey = spec.errorKey = sceneId;
-      r.frame(sceneId, mode, "", makeBenchFrame(std::move(spec)), false);
+      // Loaded now for its mode (a benchmark's name); baked and traced when a
+      // benchmark the filter keeps first needs it.
+      auto scene = std::make_shared<lighting::Scene>(lighting::loadSceneFile(file.path.string()));
+      const std::string mode = modeName(frameModeOf(scene->pipeline));
+      r.frame(sceneId, mode, "", lazyBenchFrame(true, [scene, sceneId] {
+                BenchFrameSpec spec;
+                spec.prepared = baking::prepareBakedScene(lighting::Scene(*scene));  // suite scenes may have lightmaps
+                spec.referenceKey = spec.errorKey = sceneId;
+                return makeBenchFrame(std::move(spec));
+              }),
+              false);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "render_bench: %s not registered: %s\n", sceneId.c_str(), e.what());
     }

@@ -2,9 +2,11 @@
 # Google Benchmark's own comparison tool reads bench.json
 # (docs/bench-format.md): two `lightcts bench --quick` runs on one backend,
 # then `compare.py benchmarks A/bench.json B/bench.json` must exit 0 and name
-# every benchmark both files time.
+# every benchmark both files time. With RUN_A, the folder of an earlier
+# `lightcts bench --quick` run on BACKEND (ctest's bench.command-quick), that
+# run is the first and only the second is made here.
 #
-# usage: compare_py_reads_bench_json.sh LIGHTCTS SCENES_DIR OUT_DIR [BACKEND]
+# usage: compare_py_reads_bench_json.sh LIGHTCTS SCENES_DIR OUT_DIR [BACKEND [RUN_A]]
 # Exit 77 (ctest's skip) when compare.py (Debian libbenchmark-tools) or a
 # Python with SciPy (python3-scipy) is missing, or the backend is not here.
 set -u
@@ -12,6 +14,7 @@ lightcts=$1
 scenes=$2
 out=$3
 backend=${4:-vulkan}
+run_a=${5:-}
 
 compare=${LIGHTCTS_COMPARE_PY:-/usr/share/benchmark/compare.py}
 if [ ! -f "$compare" ]; then
@@ -34,7 +37,16 @@ fi
 
 rm -rf "$out"
 mkdir -p "$out"
-for run in a b; do
+runs="a b"
+if [ -n "$run_a" ]; then
+  if [ ! -f "$run_a/bench.json" ]; then
+    echo "FAIL: no bench.json in $run_a"
+    exit 1
+  fi
+  cp -r "$run_a" "$out/a"
+  runs="b"
+fi
+for run in $runs; do
   "$lightcts" bench --quick --backend "$backend" --scenes "$scenes" --out "$out/$run" >"$out/$run.log" 2>&1
   status=$?
   if [ $status -eq 3 ]; then
