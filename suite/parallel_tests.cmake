@@ -32,5 +32,5 @@ add_parallel_test(jobs-1-and-2-write-the-same jobs "${parallel_args}" "LIGHTCTS_
 add_parallel_test(shards-merge-into-the-whole-run shards "${parallel_args}" "")
 # The shards of a selection merge into the selection: the same as one run of it.
 add_parallel_test(shards-of-a-selection-merge-into-the-selection shards
-  "--backend;vulkan;--scenes;${parallel_scenes};--include;attenuation.point-*;--exclude;*-range.vulkan;--mutant;distance-clamp-1e-4;--flake-retries;0"
+  "--backend;vulkan;--scenes;${parallel_scenes};--include;attenuation.*;--exclude;*-range.vulkan;--mutant;distance-clamp-1e-4;--flake-retries;0"
   "")
