@@ -57,9 +57,6 @@ class ImageCodec {
   // with `error` set.
   virtual long perceptualDifferences(const float* a, const float* b, int width, int height,
                                      float adaptationLuminance, float fieldOfViewDeg, std::string& error) = 0;
-
-  // The library's version, as its headers spell it ("2.4.7").
-  virtual std::string libraryVersion() const = 0;
 };
 
 }  // namespace imaging

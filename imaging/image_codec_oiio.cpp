@@ -5,7 +5,6 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
-#include <OpenImageIO/oiioversion.h>
 #include <OpenImageIO/strutil.h>
 
 namespace imaging {
@@ -68,8 +67,6 @@ class OiioCodec final : public ImageCodec {
     if (failing < 0) error = bufB.geterror();
     return failing;
   }
-
-  std::string libraryVersion() const override { return OIIO_VERSION_STRING; }
 };
 
 }  // namespace

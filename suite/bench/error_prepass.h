@@ -18,7 +18,6 @@
 #include "suite/bench/bench_frame.h"
 #include "suite/bench/run_state.h"
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
