@@ -100,7 +100,12 @@ int runCompareCommand(const SceneArguments& args, const BackendArguments& backen
     if (check.frames.size() == 1 && !std::isnan(check.frames.front().idealError))
       out << "  error against ray-traced shadows (--ideal, information, not a verdict): "
           << check.frames.front().idealError << '\n';
-    if (check.verdict == comparison::Verdict::Pass) return kExitSuccess;
+    if (check.verdict == comparison::Verdict::QualityWarning &&
+        check.evidence().comparison.verdict != comparison::Verdict::QualityWarning)
+      out << "  QualityWarning: " << check.qualityWarning << " (SPEC 7: a comparison must be able to fail)\n";
+    // A QualityWarning is no conformance failure (exit 0, docs/cli.md), and
+    // no evidence: the frame showed nothing to look at.
+    if (check.verdict != comparison::Verdict::Fail) return kExitSuccess;
     if (!writeEvidence) return kExitConformanceFailure;
     const std::string dir = evidenceDir.empty() ? "lightcts-evidence/" + name : evidenceDir;
     imaging::requireImageModule();  // the evidence is images: no half-written folder without it

@@ -76,6 +76,10 @@ int main(int argc, char** argv) {
   probeDriverCmd->add_option("--driver", probeDriver)->required();
   auto* lightsCmd = cli.add_subcommand("lights", "Print the light selection as JSON (SPEC 5.4)");
   addScene(lightsCmd, true);
+  bool sceneJson = false;
+  lightsCmd->add_flag("--scene-json", sceneJson,
+                      "For a glTF file: print instead a scene file that draws it the same way (its camera, image and "
+                      "lights, the default rig where it has none) to copy and edit");
   auto* referenceCmd = cli.add_subcommand("reference", "Write reference, tolerance and mask images (EXR)");
   addScene(referenceCmd, true);
   referenceCmd->add_flag("--ideal", ideal, "No budgets: every non-baked light per pixel (SPEC 6)");
@@ -205,7 +209,7 @@ int main(int argc, char** argv) {
   auto& e = std::cerr;
   if (*backendsCmd) return app::runBackendsCommand(backendsDriver, o, e);
   if (*probeDriverCmd) return app::runProbeDriverCommand(probeBackend, probeDriver, o, e);
-  if (*lightsCmd) return app::runLightsCommand(scene, o, e);
+  if (*lightsCmd) return app::runLightsCommand(scene, sceneJson, o, e);
   if (*referenceCmd) return app::runReferenceCommand(scene, ideal, toleranceTerms, out, o, e);
   if (*budgetCmd) {
     scene.frameGiven = budgetCmd->get_option("--frame")->count() > 0;

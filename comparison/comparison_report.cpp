@@ -84,6 +84,8 @@ void printComparison(std::ostream& out, const Comparison& comparison, std::strin
   out << verdictName(comparison.verdict) << ' ' << testName << ": " << comparison.failingPixels << " failing of "
       << comparison.comparedPixels << " compared pixels (" << comparison.maskedPixels << " masked), max error "
       << number(comparison.maxAbsError) << ", tightness " << number(comparison.maxErrorOverTolerance) << '\n';
+  if (comparison.verdict == Verdict::QualityWarning)
+    out << "  QualityWarning: " << comparison.qualityWarning << " (SPEC 7: a comparison must be able to fail)\n";
   if (comparison.nonFinitePixels > 0)
     out << "  " << comparison.nonFinitePixels << " non-finite pixels (NaN or infinity in the result always fail)\n";
   if (comparison.maxFailingPixels > 0) out << "  up to " << comparison.maxFailingPixels << " failing pixels allowed\n";
@@ -143,6 +145,8 @@ Json comparisonJson(const Comparison& comparison, std::string_view testName) {
               {"height", comparison.height},
               {"compared_pixels", comparison.comparedPixels},
               {"masked_pixels", comparison.maskedPixels},
+              {"lit_compared_pixels", comparison.litComparedPixels},
+              {"quality_warning", comparison.qualityWarning},
               {"failing_pixels", comparison.failingPixels},
               {"non_finite_pixels", comparison.nonFinitePixels},
               {"max_failing_pixels", comparison.maxFailingPixels},

@@ -1,5 +1,8 @@
 #include "comparison/image_comparison.h"
 
+#include "comparison/vacuous_comparison.h"
+#include "reference/tolerance_model.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -110,6 +113,10 @@ Comparison compareImages(const imaging::Image& result, const reference::Referenc
     for (int x = 0; x < result.width; ++x) {
       const bool masked = value.at(x, y, 3) == 0.0f;
       ++(masked ? out.maskedPixels : out.comparedPixels);
+      if (!masked && (value.at(x, y, 0) > reference::tolerance::kFlushToZeroFloor ||
+                      value.at(x, y, 1) > reference::tolerance::kFlushToZeroFloor ||
+                      value.at(x, y, 2) > reference::tolerance::kFlushToZeroFloor))
+        ++out.litComparedPixels;
 
       bool nonFinite = false;
       for (int c = 0; c < result.channels; ++c) nonFinite = nonFinite || !std::isfinite(result.at(x, y, c));
@@ -168,7 +175,9 @@ Comparison compareImages(const imaging::Image& result, const reference::Referenc
   out.ambiguousShadowPixels = reference.ambiguousShadowPixels;
   out.defectiveScene = reference.shadowAmbiguityExceedsCap();
   const bool asExpected = out.comparisonPassed != out.expectFail && out.nonFinitePixels == 0 && !out.defectiveScene;
-  out.verdict = asExpected ? Verdict::Pass : Verdict::Fail;
+  out.qualityWarning = vacuousComparisonReason(
+      {(long long)(result.width) * result.height, out.comparedPixels, out.litComparedPixels});
+  out.verdict = !asExpected ? Verdict::Fail : out.qualityWarning.empty() ? Verdict::Pass : Verdict::QualityWarning;
   return out;
 }
 

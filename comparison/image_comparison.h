@@ -2,7 +2,7 @@
 // Pure computation: no files, no printing (comparison_report.h does those).
 #pragma once
 
-#include "comparison/verdict.h"  // Verdict: a comparison yields only Pass or Fail
+#include "comparison/verdict.h"  // Verdict: a comparison yields Pass, Fail or QualityWarning
 #include "imaging/image.h"
 #include "lighting/scene.h"
 #include "reference/reference_renderer.h"
@@ -32,6 +32,10 @@ struct Comparison {
   int height = 0;
   long long comparedPixels = 0;   // mask != 0
   long long maskedPixels = 0;     // mask == 0 (don't care); comparedPixels + maskedPixels = width * height
+  // Compared pixels where some channel of the reference is above the
+  // flush-to-zero floor: with none, the frame is black and matching it
+  // checks nothing (vacuous_comparison.h).
+  long long litComparedPixels = 0;
   long long failingPixels = 0;    // non-finite pixels included, masked or not
   long long nonFinitePixels = 0;
   long long maxFailingPixels = 0;  // copied from the Expectation, so the evidence explains the verdict
@@ -56,7 +60,11 @@ struct Comparison {
   // prove a known mismatch is detected, so it passing the comparison is a Fail.
   // Non-finite pixels are a Fail even there (SPEC 7: they always fail); a NaN
   // is a defect of its own, not the mismatch the scene is meant to show.
+  // A Pass whose frame checks nothing (qualityWarning) is QualityWarning.
   Verdict verdict = Verdict::Fail;
+  // Why the frame checks nothing (vacuousComparisonReason), or "": set
+  // whatever the verdict; it makes a would-be Pass a QualityWarning.
+  std::string qualityWarning;
   // RGB: non-finite magenta (1, 0, 1), failing red (1, 0, 0), masked grey
   // (0.25), passing black; in that order of precedence.
   imaging::Image errorMask;

@@ -170,7 +170,10 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
     }
 
     // Evidence: the first failing frame, else the tightest one.
-    const bool pass = frameCheck.comparison.verdict == comparison::Verdict::Pass;
+    const bool pass = frameCheck.comparison.verdict != comparison::Verdict::Fail;
+    if (pass && check.qualityWarning.empty() && !frameCheck.comparison.qualityWarning.empty())
+      check.qualityWarning = (animated ? "frame " + std::to_string(f) + ": " : std::string()) +
+                             frameCheck.comparison.qualityWarning;
     const double tightness = frameCheck.comparison.maxErrorOverTolerance;
     const bool keep = allPass && (!pass || tightness > worstTightness || check.frames.empty());
     if (keep && !pass && frame.shadows.any()) {
@@ -187,7 +190,10 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
     check.frames.push_back(std::move(frameCheck));
   }
 
-  check.verdict = allPass ? comparison::Verdict::Pass : comparison::Verdict::Fail;
+  if (!allPass) check.qualityWarning.clear();
+  check.verdict = !allPass                         ? comparison::Verdict::Fail
+                  : check.qualityWarning.empty() ? comparison::Verdict::Pass
+                                                 : comparison::Verdict::QualityWarning;
   if (animated && !options.onlyFrame) {
     double score = 0;
     for (const FrameCheck& f : check.frames)

@@ -104,7 +104,12 @@ struct FrameCheck {
 };
 
 struct SceneCheck {
-  comparison::Verdict verdict = comparison::Verdict::Fail;  // Pass only when every frame passes
+  // Fail when a frame fails; else QualityWarning when a frame checks
+  // nothing (its comparison's qualityWarning); else Pass.
+  comparison::Verdict verdict = comparison::Verdict::Fail;
+  // The first vacuous frame's reason ("frame F: ..." in an animated scene),
+  // or "": what results.json, junit.xml and the report give as the message.
+  std::string qualityWarning;
   std::vector<FrameCheck> frames;
   std::optional<double> poppingScore;  // animated scenes: max poppingJump over frames
   // The frame whose images are kept as evidence: the first failing frame,

@@ -5,6 +5,7 @@
 
 #include "imaging/image_files.h"
 
+#include "lighting/default_rig.h"
 #include "lighting/gltf_import.h"
 #include "lighting/json_describe.h"
 #include "lighting/json_locations.h"
@@ -150,6 +151,8 @@ constexpr std::array<std::string_view, 12> kSceneKeys{"lightcts", "name",   "des
                                                       "camera",   "pipeline", "ambient",   "objects",
                                                       "lights",   "frames",   "expect",    "imports"};
 // SPEC 2.1: an import of a glTF file, and what its lights take from the scene.
+// An import's "lights": "default-rig" (SPEC 2.1: an import may ask for the rig).
+constexpr std::string_view kDefaultRigWord = "default-rig";
 constexpr std::array<std::string_view, 6> kImportKeys{"gltf",      "scene",  "transform",
                                                       "materials", "lights", "light_defaults"};
 constexpr std::array<std::string_view, 7> kLightDefaultsKeys{"range",      "mode",         "shadows", "shadow_strength",
@@ -268,10 +271,17 @@ class SceneReader {
     scene.objects = readArray(*member(root, "objects"), &SceneReader::readObject);
     if (scene.pipeline.profile == Profile::Legacy) rejectSrpMaterials(*member(root, "objects"), scene.objects);
     scene.lights = readArray(*member(root, "lights"), &SceneReader::readLight);
-    // Imported objects and lights follow the file's own (SPEC 2.1).
+    // Imported objects and lights follow the file's own (SPEC 2.1); an
+    // import that asks for the default rig gets it from its content's bounds
+    // and the scene's camera, and its ambient where the scene gives none.
     for (Import& import : imports) {
       for (Object& object : import.objects) scene.objects.push_back(std::move(object));
       for (Light& light : import.lights) scene.lights.push_back(std::move(light));
+      if (import.defaultRig) {
+        DefaultRig rig = defaultRig(import.content.boundsMin, import.content.boundsMax, scene.camera);
+        for (Light& light : rig.lights) scene.lights.push_back(std::move(light));
+        if (!member(root, "ambient")) scene.ambient = rig.ambient;
+      }
       for (std::string& warning : import.content.warnings) scene.warnings.push_back(std::move(warning));
     }
     if (auto frames = member(root, "frames")) scene.frames = readFrames(*frames, scene.camera);
@@ -442,6 +452,7 @@ class SceneReader {
     GltfContent content;
     std::vector<Object> objects;
     std::vector<Light> lights;
+    bool defaultRig = false;  // "lights": "default-rig": lit by the rig, placed once the camera is known
   };
 
   std::vector<Import> readImports(const Node& node, Profile profile) const {
@@ -473,7 +484,17 @@ class SceneReader {
       }
     }
     bool takeLights = true;
-    if (auto lights = member(node, "lights")) takeLights = readBool(*lights);
+    if (auto lights = member(node, "lights")) {
+      if (lights->value.is_string()) {
+        if (lights->value.get<std::string>() != kDefaultRigWord)
+          fail(*lights, "expected true, false or \"" + std::string(kDefaultRigWord) + "\", got '" +
+                            lights->value.get<std::string>() + "'");
+        takeLights = false;
+        import.defaultRig = true;
+      } else {
+        takeLights = readBool(*lights);
+      }
+    }
     const auto defaults = member(node, "light_defaults");
     if (defaults) {
       expectObject(*defaults);
@@ -614,8 +635,15 @@ class SceneReader {
       scene.lights.push_back(std::move(light));
     }
     scene.warnings = std::move(content.warnings);
-    if (content.lights.empty())
-      scene.warnings.push_back(file_ + ": the file has no KHR_lights_punctual lights: its image is black");
+    // SPEC 2.1: content without lights gets the default rig, not a black image.
+    if (content.lights.empty()) {
+      DefaultRig rig = defaultRig(content.boundsMin, content.boundsMax, scene.camera);
+      scene.lights = std::move(rig.lights);
+      scene.ambient = rig.ambient;
+      scene.warnings.push_back(file_ +
+                               ": the file has no KHR_lights_punctual lights: it is lit by the default rig "
+                               "(docs/scene-format.md; `lightcts lights --scene FILE --scene-json` prints it as a scene file)");
+    }
     return scene;
   }
 

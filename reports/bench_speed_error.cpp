@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -40,6 +41,13 @@ svg::Scale errorScale(const std::vector<TimeError>& te) {
     if (err > 0) lo = std::min(lo, err), hi = std::max(hi, err);
   const bool positive = std::all_of(te.begin(), te.end(), [](const TimeError& p) { return p.second > 0; });
   return lo > 0 && hi / lo > 10 && positive ? svg::Scale::Log10 : svg::Scale::Linear;
+}
+
+// An error for a hover title: three significant digits ("1.23e-05").
+std::string errorText(double error) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", error);
+  return text;
 }
 
 // The front as one stepped line in time order, drawn under the points.
@@ -114,6 +122,8 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
     const std::string group = byBackend ? backendOf(e) : e.name.mode;
     svg::Point p = svg::pointAt(te[i].first, te[i].second);
     p.id = backendOf(e) + "/" + e.name.mode;
+    p.title = e.name.mode + " on " + backendOf(e) + ": median " + svg::tickText(te[i].first) + " ms, err_rmse " +
+              errorText(te[i].second) + (front[i] ? " (Pareto front)" : "");
     p.label = e.name.mode;
     p.highlight = front[i];
     if (e.count >= 2 && e.minMs && e.maxMs) p.xLow = e.minMs, p.xHigh = e.maxMs;  // the repetitions' spread

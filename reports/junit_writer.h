@@ -19,7 +19,10 @@ namespace reports {
 //   ExpectedFail                             <skipped message="ExpectedFail: reason">
 //                                            (pytest's xfail convention: a known
 //                                            failure is not a pass, and must not block)
-//   QualityWarning, Flake, Pass              pass; QualityWarning and Flake with <system-out>
+//   QualityWarning                           <skipped message="QualityWarning: reason">
+//                                            (a comparison that checked nothing, SPEC 7:
+//                                            no pass, and no failure of the driver)
+//   Flake, Pass                              pass; Flake with <system-out>
 // (the classification is comparison::ciOutcome, comparison/verdict.h).
 // A test with evidence names its page (the viewer, evidence/<test>/viewer.html,
 // relative to the run folder, or results.json's "evidence_url" with {test}

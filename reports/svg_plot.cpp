@@ -1,6 +1,7 @@
 #include "reports/svg_plot.h"
 
 #include "reports/html_escape.h"
+#include "reports/svg_labels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -181,10 +182,8 @@ std::string render(const Plot& plot) {
   out << "</g>\n";
 
   // Series.
-  struct Box { double x0, y0, x1, y1; };
-  struct Label { double px, py; const Point* p; };
-  std::vector<Box> boxes;
-  std::vector<Label> labels;
+  std::vector<LabelBox> markers;
+  std::vector<LabelRequest> labels;
   for (const Series& s : plot.series) {
     std::vector<const Point*> shown;
     for (const Point& p : s.points)
@@ -214,47 +213,33 @@ std::string render(const Plot& plot) {
         out << "<line class=\"whisker\" x1=\"" << num(X(*p->xLow)) << "\" y1=\"" << num(py) << "\" x2=\""
             << num(X(*p->xHigh)) << "\" y2=\"" << num(py) << "\" stroke=\"" << escapeText(s.colour)
             << "\" stroke-width=\"1\"/>\n";
+      const std::string& tooltip = p->title.empty() ? p->id : p->title;
       if (s.markers) {
         if (p->highlight)
-          out << "<circle cx=\"" << num(px) << "\" cy=\"" << num(py)
+          out << "<circle class=\"ring\" cx=\"" << num(px) << "\" cy=\"" << num(py)
               << "\" r=\"7.5\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>\n";
         out << "<circle class=\"pt" << (p->highlight ? " front" : "") << "\" data-point=\"" << escapeText(p->id)
             << "\" cx=\"" << num(px) << "\" cy=\"" << num(py) << "\" r=\"4\" fill=\"" << escapeText(s.colour)
-            << "\"><title>" << escapeText(p->id) << "</title></circle>\n";
+            << "\"><title>" << escapeText(tooltip) << "</title></circle>\n";
+        const double r = p->highlight ? 8.5 : 4.5;  // the ring's stroke included
+        markers.push_back({px - r, py - r, px + r, py + r});
       }
-      if (s.markers) boxes.push_back({px - 5, py - 5, px + 5, py + 5});
-      if (!p->label.empty()) labels.push_back({px, py, p});
+      if (!p->label.empty()) labels.push_back({px, py, p->label, tooltip, p->highlight});
     }
     out << "</g>\n";
   }
 
-  // Point labels, each at the first of four places beside its point that
-  // overlaps no marker and no label placed before (else the first place).
-  out << "<g class=\"labels\" font-size=\"10\">\n";
-  for (const auto& [px, py, p] : labels) {
-    const double w = 6.0 * double(p->label.size()) * (p->highlight ? 1.08 : 1.0), h = 11;
-    struct Place { double dx, dy; bool end; };
-    const Place places[] = {{7, -7, false}, {7, 15, false}, {-7, -7, true}, {-7, 15, true}};
-    Box chosen{};
-    const Place* best = &places[0];
-    for (const Place& at : places) {
-      const double left = at.end ? px + at.dx - w : px + at.dx;
-      const Box box{left, py + at.dy - 9, left + w, py + at.dy - 9 + h};
-      const bool inside = box.x0 >= x0 && box.x1 <= x1 + kRight - 10 && box.y0 >= y0 - 10 && box.y1 <= y1;
-      const bool clear = std::none_of(boxes.begin(), boxes.end(), [&](const Box& b) {
-        return box.x0 < b.x1 && b.x0 < box.x1 && box.y0 < b.y1 && b.y0 < box.y1;
-      });
-      if (&at == &places[0]) chosen = box;
-      if (inside && clear) {
-        best = &at;
-        chosen = box;
-        break;
-      }
+  // Point labels (svg_labels.h): the front's first, then as many as fit,
+  // none over another or over a point; one per group of points on one spot.
+  out << "<g class=\"labels\" font-size=\"" << num(kLabelFontSize) << "\" font-family=\"monospace\">\n";
+  for (const PlacedLabel& l : placeLabels(labels, markers, {x0, y0, x1, y1})) {
+    if (l.leader) {
+      const double lx = std::clamp(l.px, l.box.x0, l.box.x1), ly = std::clamp(l.py, l.box.y0, l.box.y1);
+      out << "<line class=\"leader\" x1=\"" << num(l.px) << "\" y1=\"" << num(l.py) << "\" x2=\"" << num(lx)
+          << "\" y2=\"" << num(ly) << "\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
     }
-    boxes.push_back(chosen);
-    out << "<text x=\"" << num(px + best->dx) << "\" y=\"" << num(py + best->dy) << "\""
-        << (best->end ? " text-anchor=\"end\"" : "") << (p->highlight ? " font-weight=\"bold\"" : "") << ">"
-        << escapeText(p->label) << "</text>\n";
+    out << "<text x=\"" << num(l.x) << "\" y=\"" << num(l.y) << "\"" << (l.bold ? " font-weight=\"bold\"" : "")
+        << "><title>" << escapeText(l.title) << "</title>" << escapeText(l.text) << "</text>\n";
   }
   out << "</g>\n";
 

@@ -24,9 +24,10 @@ struct Point {
   double x = 0, y = 0;
   std::optional<double> yLow, yHigh;  // a vertical whisker (min and max over repetitions)
   std::optional<double> xLow, xHigh;  // a horizontal whisker (the scatter's time axis)
-  std::string label;                  // drawn beside the point ("" for none)
-  std::string id;                     // data-point attribute and tooltip
-  bool highlight = false;             // drawn with a ring, class "front"
+  std::string label;                  // drawn beside the point where it fits ("" for none): svg_labels.h
+  std::string id;                     // data-point attribute, and the tooltip when `title` is empty
+  std::string title;                  // the tooltip (hover text)
+  bool highlight = false;             // drawn with a ring, class "front"; its label is placed first
 };
 
 struct Series {

@@ -126,7 +126,7 @@ Json mutantRecord(const std::string& mutant, const std::string& suffix, BackendS
     const Verdict raw = rawVerdictOf(r);
     const std::string test = r.value("test", "");
     const auto clean = cleanVerdicts.find(test);
-    if (raw == Verdict::Fail && (clean == cleanVerdicts.end() || clean->second == Verdict::Pass)) {
+    if (raw == Verdict::Fail && (clean == cleanVerdicts.end() || passed(clean->second))) {
       killedBy.push_back(test.substr(0, test.rfind('.')));
       if (evidence.is_null() && !r["evidence"].is_null()) {
         evidence = r["evidence"];

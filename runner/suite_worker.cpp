@@ -62,12 +62,13 @@ void testHooks(const std::string& test) {
 // Metrics over every frame checked: counts summed, errors and tightness the
 // largest; the worst pixels are those of the evidence frame.
 Json metricsJson(const conformance::SceneCheck& check) {
-  long long compared = 0, masked = 0, failing = 0, nonFinite = 0;
+  long long compared = 0, masked = 0, lit = 0, failing = 0, nonFinite = 0;
   double maxAbs = 0, tightness = 0, rmse = 0;
   for (const conformance::FrameCheck& f : check.frames) {
     const comparison::Comparison& c = f.comparison;
     compared += c.comparedPixels;
     masked += c.maskedPixels;
+    lit += c.litComparedPixels;
     failing += c.failingPixels;
     nonFinite += c.nonFinitePixels;
     maxAbs = std::max(maxAbs, c.maxAbsError);
@@ -84,7 +85,8 @@ Json metricsJson(const conformance::SceneCheck& check) {
     pixel["tolerance_scale"] = e.toleranceScale;
     worst.push_back(pixel);
   }
-  return {{"compared_pixels", compared}, {"masked_pixels", masked},   {"failing_pixels", failing},
+  return {{"compared_pixels", compared}, {"masked_pixels", masked},   {"lit_compared_pixels", lit},
+          {"failing_pixels", failing},
           {"non_finite_pixels", nonFinite}, {"max_failing_pixels", e.maxFailingPixels},
           {"max_abs_error", finiteOrNull(maxAbs)}, {"rmse", finiteOrNull(rmse)},
           {"tightness", finiteOrNull(tightness)}, {"tightness_is_infinite", std::isinf(tightness)},
@@ -197,7 +199,7 @@ class Worker {
     options.mutant = *shaders::mutantFromName(task.mutant);  // checked by ensureBackend
     const conformance::SceneCheck check = conformance::checkScene(references, *backend_, options);
     result["raw_verdict"] = comparison::verdictName(check.verdict);
-    result["message"] = "";
+    result["message"] = check.qualityWarning;  // why a QualityWarning checks nothing; "" otherwise
     result["metrics"] = metricsJson(check);
     result["frames"] = framesJson(check);
     result["popping_score"] = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
@@ -210,7 +212,7 @@ class Worker {
     // too, so the report shows how far off that mismatch is.
     const bool isMutant = task.mutant != "none";
     const bool detectedMismatch = !isMutant && references.prepared()->scene.expect.expectFail;
-    if (check.verdict == comparison::Verdict::Pass && !detectedMismatch) return;
+    if (check.verdict != comparison::Verdict::Fail && !detectedMismatch) return;
     if (isMutant && !evidencedMutants_.insert(task.mutant).second) return;
     const std::string dir =
         isMutant ? mutantEvidenceDir(task.mutant, plan_.combination.suffix) : testEvidenceDir(task.test);

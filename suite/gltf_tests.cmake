@@ -63,3 +63,17 @@ add_test(NAME gltf.fuzzed-files-exit-0-2-or-3
 --lightcts $<TARGET_FILE:lightcts> --seeds ${gltf_scenes}/models --out ${gltf_out}/fuzz --count 150 --seed 1 --jobs 2")
 set_tests_properties(gltf.fuzzed-files-exit-0-2-or-3 PROPERTIES LABELS "gltf;cli" TIMEOUT 900
   ENVIRONMENT "LIGHTCTS_CACHE_DIR=${CMAKE_BINARY_DIR}/cache")
+
+# A glTF file without lights (the generated box) is lit by the default rig
+# (docs/scene-format.md): its comparison is a real Pass, not a black frame's
+# QualityWarning; and the scene `lights --scene-json` prints for it, saved
+# and loaded as a scene file, passes the same way.
+add_test(NAME gltf.bare-file-without-lights-is-lit-by-the-rig
+         COMMAND lightcts compare --scene ${gltf_scenes}/models/box.gltf --backend vulkan --no-evidence)
+add_test(NAME gltf.printed-rig-scene-loads-and-passes
+         COMMAND sh -c "mkdir -p ${gltf_out} && \
+$<TARGET_FILE:lightcts> lights --scene ${gltf_scenes}/models/box.gltf --scene-json > ${gltf_out}/box-rig.json && \
+$<TARGET_FILE:lightcts> compare --scene ${gltf_out}/box-rig.json --backend vulkan --no-evidence")
+set_tests_properties(gltf.bare-file-without-lights-is-lit-by-the-rig gltf.printed-rig-scene-loads-and-passes
+  PROPERTIES LABELS "gltf;vulkan" SKIP_RETURN_CODE 3 ENVIRONMENT "${backend_test_environment}"
+  PASS_REGULAR_EXPRESSION "(^|\n)Pass [^\n]*: 0 failing" FAIL_REGULAR_EXPRESSION "QualityWarning")

@@ -55,7 +55,7 @@ const char* kSelectionScene = R"({
 
 TEST_F(CommandsTest, LightsPrintsTheSpecJson) {
   const std::string scene = writeScene(kSelectionScene);
-  ASSERT_EQ(runLightsCommand({scene, 0}, out_, err_), kExitSuccess) << err_.str();
+  ASSERT_EQ(runLightsCommand({scene, 0}, false, out_, err_), kExitSuccess) << err_.str();
   const auto json = nlohmann::ordered_json::parse(out_.str());
   // Keys in SPEC order.
   std::vector<std::string> keys;
@@ -114,7 +114,7 @@ TEST_F(CommandsTest, BadSceneExitsTwoNamingThePath) {
   std::string json = kSelectionScene;
   json.replace(json.find("\"range\": 3,"), 11, "\"range\": -3,");  // light 2, "far"
   const std::string scene = writeScene(json);
-  EXPECT_EQ(runLightsCommand({scene, 0}, out_, err_), kExitBadInput);
+  EXPECT_EQ(runLightsCommand({scene, 0}, false, out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("/lights/2/range"), std::string::npos) << err_.str();
   EXPECT_TRUE(out_.str().empty());  // nothing half-written on stdout
 }
@@ -128,12 +128,12 @@ TEST_F(CommandsTest, BadSceneWritesNoReferenceFiles) {
 
 TEST_F(CommandsTest, FrameOutOfRangeExitsTwo) {
   const std::string scene = writeScene(kSelectionScene);
-  EXPECT_EQ(runLightsCommand({scene, 1}, out_, err_), kExitBadInput);
+  EXPECT_EQ(runLightsCommand({scene, 1}, false, out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("--frame 1 is out of range"), std::string::npos) << err_.str();
 }
 
 TEST_F(CommandsTest, MissingSceneFileExitsTwo) {
-  EXPECT_EQ(runLightsCommand({(dir_ / "nope.json").string(), 0}, out_, err_), kExitBadInput);
+  EXPECT_EQ(runLightsCommand({(dir_ / "nope.json").string(), 0}, false, out_, err_), kExitBadInput);
   EXPECT_NE(err_.str().find("nope.json"), std::string::npos);
 }
 

@@ -14,7 +14,7 @@
 // per-object lists (the mode replaces the all-lights loop, not the lists).
 #include "backends/backend.h"
 #include "backends/tests/backend_combinations.h"
-#include "backends/tests/suite_scene_renders.h"
+#include "backends/tests/suite_scene_checks.h"
 #include "baking/bake.h"
 #include "conformance/reference_cache.h"
 #include "conformance/scene_check.h"
@@ -46,15 +46,6 @@ lighting::ClusterGridSpec gridFor(const lighting::Frame& frame) {
   return grid;
 }
 
-std::vector<std::filesystem::path> suiteSceneFiles() {
-  std::vector<std::filesystem::path> files;
-  for (const auto& group : std::filesystem::directory_iterator(LIGHTCTS_SCENES_DIR))
-    for (const auto& file : std::filesystem::directory_iterator(group.path()))
-      if (file.path().extension() == ".json") files.push_back(file.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 class ClusteredMode : public ::testing::TestWithParam<Combination> {};
 
 TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
@@ -67,7 +58,7 @@ TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
   int checked = 0, frames = 0, legacy = 0, deferred = 0, lists = 0;
   double worstTightness = 0;
   std::string worstScene;
-  for (const std::filesystem::path& file : suiteSceneFiles()) {
+  for (const std::filesystem::path& file : backends::testing::suiteSceneFiles(LIGHTCTS_SCENES_DIR)) {
     lighting::Scene scene = lighting::loadSceneFile(file.string());
     if (scene.pipeline.profile == lighting::Profile::Legacy) {
       ++legacy;
@@ -77,8 +68,7 @@ TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
       ++deferred;
       continue;
     }
-    const auto caching = conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), file, scene);
-    conformance::SceneReferences references(baking::prepareBakedScene(std::move(scene)), caching);
+    conformance::SceneReferences references = backends::testing::cachedSceneReferences(file, std::move(scene));
     if (!references.frame(0).objectLists.empty()) {
       ++lists;
       continue;

@@ -55,7 +55,7 @@ TEST(Verdict, RunFailures) {
 TEST(Verdict, CiOutcomes) {
   EXPECT_EQ(ciOutcome(Verdict::Pass), CiOutcome::Pass);
   EXPECT_EQ(ciOutcome(Verdict::Fail), CiOutcome::Failure);
-  EXPECT_EQ(ciOutcome(Verdict::QualityWarning), CiOutcome::Pass);
+  EXPECT_EQ(ciOutcome(Verdict::QualityWarning), CiOutcome::Skipped);  // checked nothing: no pass
   EXPECT_EQ(ciOutcome(Verdict::NotSupported), CiOutcome::Skipped);
   EXPECT_EQ(ciOutcome(Verdict::Crash), CiOutcome::Error);
   EXPECT_EQ(ciOutcome(Verdict::Timeout), CiOutcome::Error);

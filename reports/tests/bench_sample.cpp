@@ -1,5 +1,7 @@
 #include "reports/tests/bench_sample.h"
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -155,6 +157,37 @@ Json sampleBench() {
          {"context", nullptr}, {"benchmarks", Json::array()}}}},
       {"prepare", {{"context", {{"host_name", "ci-1"}}}, {"benchmarks", prepare}}}};
   return bench;
+}
+
+Json crowdedBench() {
+  Json vulkan = Json::array();
+  const auto frame = [&vulkan](const std::string& scene, const std::string& mode, double ms, double error) {
+    repetitionsOnly(vulkan, "frame/vulkan/" + scene + "/" + mode + "/manual_time", {ms * 0.99, ms, ms * 1.02}, "ms",
+                    frameCounters(error, error * 10, 0.5, true, ms));
+  };
+  const char* filters[] = {"hard", "bilinear", "tent3x3"};
+  const int sizes[] = {256, 512, 1024, 2048, 4096};
+  for (int i = 0; i < 30; ++i) {
+    const std::string mode = i < 15 ? std::string("shadows-") + filters[i % 3] + "-" + std::to_string(sizes[i / 3])
+                                    : "all-lights-variant-" + std::to_string(i);
+    frame("lights64-1280x720", mode, std::pow(10.0, 2.0 * i / 29.0), 0.01);
+  }
+  for (const char* mode : {"all-lights", "clustered", "per-object", "full-shader", "specular", "specular-full-shader",
+                           "per-object-specular", "cookie-lights"})
+    frame("lights64-1280x720", mode, 5.0, 1e-5);
+  for (int i = 0; i < 14; ++i)
+    frame("lights64-320x180", std::string("shadows-") + filters[i % 3] + "-" + std::to_string(sizes[i % 5]),
+          20.0 + 0.7 * i, 0.0095 + 0.0001 * i);
+  for (const char* mode : {"all-lights", "clustered", "per-object"}) frame("lights64-320x180", mode, 4.0, 1.2e-5);
+  return {{"format", "lightcts-bench"}, {"version", 1}, {"lightcts_revision", "crowded"},
+          {"started_utc", "2026-12-01T16:00:00Z"}, {"duration_s", 1.0}, {"command", "bench_tool crowded"},
+          {"machine", {{"hostname", "ci-1"}, {"cpu", "Test CPU"}, {"cores", 2}, {"os", "Debian 12"}}},
+          {"backends",
+           {{{"backend", "vulkan"}, {"status", "ran"}, {"message", ""},
+             {"device", {{"name", "llvmpipe"}, {"driver", "llvmpipe"}, {"driver_version", "Mesa 22.3.6"},
+                         {"api_version", "1.3.230"}}},
+             {"context", {{"host_name", "ci-1"}}},
+             {"benchmarks", vulkan}}}}};
 }
 
 Json plainBenchmarkFile(const std::vector<std::pair<std::string, std::vector<double>>>& runs) {

@@ -30,6 +30,13 @@ namespace reports::testing {
 
 nlohmann::ordered_json sampleBench();
 
+// The speed-against-error plot's worst cases, on one Vulkan backend:
+// lights64-1280x720 with 30 modes at one error (0.01), their times spread
+// over 1 to 100 ms, and 8 more modes at one spot (5 ms, 1e-5); and a second
+// scene of 14 modes crowded near 0.01 and 3 near 1e-5 (a full bench's
+// shadow and all-lights clusters). No label may overlap another or a point.
+nlohmann::ordered_json crowdedBench();
+
 // A plain Google Benchmark file: `repetitions` of `name` with these real
 // times in ms (run_type "iteration", no aggregates).
 nlohmann::ordered_json plainBenchmarkFile(const std::vector<std::pair<std::string, std::vector<double>>>& runs);

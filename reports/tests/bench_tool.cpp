@@ -1,7 +1,10 @@
 // The benchmark pages and comparison from the command line, for tests and
 // reviews:
-//   bench_tool sample DIR [--broken-svg]   DIR/bench.json (bench_sample.h) and its pages;
-//                                          --broken-svg empties the first plot of index.html
+//   bench_tool sample DIR [--broken-svg | --overlapping-labels]
+//                                          DIR/bench.json (bench_sample.h) and its pages;
+//                                          --broken-svg empties the first plot of index.html,
+//                                          --overlapping-labels draws its first point label twice
+//   bench_tool crowded DIR                 the same for crowdedBench(), the plot's worst cases
 //   bench_tool report BENCH.json DIR       the pages of a bench.json
 //   bench_tool compare BEFORE.json AFTER.json   exit 1 on a significant regression
 // Exit 2 on bad usage or input.
@@ -35,7 +38,8 @@ std::string readText(const fs::path& path) {
 }
 
 int usage() {
-  std::cerr << "usage: bench_tool sample DIR [--broken-svg] | report BENCH.json DIR | compare BEFORE AFTER\n";
+  std::cerr << "usage: bench_tool sample DIR [--broken-svg | --overlapping-labels] | crowded DIR | report BENCH.json DIR "
+               "| compare BEFORE AFTER\n";
   return 2;
 }
 
@@ -43,11 +47,13 @@ int usage() {
 
 int main(int argc, char** argv) {
   try {
-    if (argc >= 3 && std::strcmp(argv[1], "sample") == 0) {
+    if (argc >= 3 && (std::strcmp(argv[1], "sample") == 0 || std::strcmp(argv[1], "crowded") == 0)) {
       const fs::path dir = argv[2];
-      const bool broken = argc == 4 && std::strcmp(argv[3], "--broken-svg") == 0;
-      if (argc > 4 || (argc == 4 && !broken)) return usage();
-      const auto bench = reports::testing::sampleBench();
+      const bool crowded = std::strcmp(argv[1], "crowded") == 0;
+      const bool broken = !crowded && argc == 4 && std::strcmp(argv[3], "--broken-svg") == 0;
+      const bool overlapping = !crowded && argc == 4 && std::strcmp(argv[3], "--overlapping-labels") == 0;
+      if (argc > 4 || (argc == 4 && !broken && !overlapping)) return usage();
+      const auto bench = crowded ? reports::testing::crowdedBench() : reports::testing::sampleBench();
       imaging::writeFileAtomically(dir / "bench.json", bench.dump(2) + "\n");
       reports::writeBenchReport(bench, dir);
       if (broken) {  // the first plot keeps its <svg> element but loses everything it draws
@@ -56,6 +62,17 @@ int main(int argc, char** argv) {
         const std::size_t inside = html.find('>', open) + 1;
         const std::size_t close = html.find("</svg>", inside);
         html.erase(inside, close - inside);
+        imaging::writeFileAtomically(dir / "index.html", html);
+      }
+      if (overlapping) {  // the first point label drawn a second time, on top of itself
+        std::string html = readText(dir / "index.html");
+        const std::size_t group = html.find("<g class=\"labels\"");
+        const std::size_t open = html.find("<text ", group);
+        const std::size_t close = html.find("</text>", open);
+        if (group == std::string::npos || open == std::string::npos || close == std::string::npos)
+          throw std::runtime_error("index.html has no point label to repeat");
+        const std::string label = html.substr(open, close + 7 - open);
+        html.insert(close + 7, "\n" + label);
         imaging::writeFileAtomically(dir / "index.html", html);
       }
       std::cout << "wrote " << (dir / "index.html").string() << "\n";

@@ -2,8 +2,9 @@
 # Opens every DIR/*.html (the benchmark pages, docs/bench-report.md) in
 # headless Chromium and checks that every inline <svg> plot renders: a
 # non-zero bounding box (getBBox) and layout box, and drawn elements (paths,
-# lines, circles, text) of non-zero extent; and that the pages have at least
-# one <svg> between them.
+# lines, circles, text) of non-zero extent; that no point label overlaps
+# another label or a point (their getBBox boxes, as the browser laid them
+# out); and that the pages have at least one <svg> between them.
 #
 #   check_svgs_render.sh DIR
 #
@@ -49,7 +50,7 @@ var urls = [${urls%,}];
 var lines = new Array(urls.length), pending = urls.length;
 function check(doc) {
   var svgs = Array.prototype.slice.call(doc.querySelectorAll("svg"));
-  var broken = [];
+  var broken = [], labelCount = 0;
   svgs.forEach(function (s, i) {
     var why = [];
     var box = s.getBBox(), rect = s.getBoundingClientRect();
@@ -58,9 +59,27 @@ function check(doc) {
     var shapes = Array.prototype.slice.call(s.querySelectorAll("path, line, polyline, polygon, circle, ellipse, text"));
     var drawn = shapes.filter(function (e) { var b = e.getBBox(); return b.width > 0 || b.height > 0; });
     if (drawn.length === 0) why.push("nothing drawn (" + shapes.length + " shapes, all empty)");
+    // Point labels (reports/svg_labels.h): none over another label or over a point.
+    var labels = Array.prototype.slice.call(s.querySelectorAll("g.labels text"));
+    var points = Array.prototype.slice.call(s.querySelectorAll("circle.pt, circle.ring"));
+    var lb = labels.map(function (t) { return t.getBBox(); });
+    var pb = points.map(function (c) { return c.getBBox(); });
+    var hit = function (a, b) { return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height; };
+    var text = function (t) { return (t.lastChild && t.lastChild.nodeType === 3 ? t.lastChild : t).textContent; };
+    var overlaps = [];
+    for (var a = 0; a < lb.length; ++a) {
+      for (var b = a + 1; b < lb.length; ++b)
+        if (hit(lb[a], lb[b])) overlaps.push("label '" + text(labels[a]) + "' over label '" + text(labels[b]) + "'");
+      for (var p = 0; p < pb.length; ++p)
+        if (hit(lb[a], pb[p]))
+          overlaps.push("label '" + text(labels[a]) + "' over point '" + (points[p].getAttribute("data-point") || "ring") + "'");
+    }
+    if (overlaps.length) why.push(overlaps.length + " overlaps: " + overlaps.slice(0, 5).join("; "));
+    labelCount += labels.length;
     if (why.length) broken.push("BROKEN SVG #" + i + " \"" + (s.getAttribute("aria-label") || "") + "\": " + why.join("; "));
   });
-  return "total=" + svgs.length + " broken=" + broken.length + "\n" + broken.map(function (b) { return b + "\n"; }).join("");
+  return "labels=" + labelCount + " total=" + svgs.length + " broken=" + broken.length + "\n" +
+         broken.map(function (b) { return b + "\n"; }).join("");
 }
 function finish() {
   var out = document.createElement("pre");
@@ -114,8 +133,9 @@ for page in "${pages[@]}"; do
   fi
   total=$(echo "$line" | sed -n 's/.* total=\([0-9]*\).*/\1/p')
   broken=$(echo "$line" | sed -n 's/.* broken=\([0-9]*\).*/\1/p')
+  labels=$(echo "$line" | sed -n 's/.* labels=\([0-9]*\) .*/\1/p')
   in_source=$( (grep -o '<svg[ >]' "$page" || true) | wc -l)
-  echo "$name: $total plots, $broken broken"
+  echo "$name: $total plots, $broken broken, ${labels:-0} point labels"
   echo "$result" | awk -v page="PAGE $name " 'index($0, page) == 1 { on = 1; next } /^PAGE / { on = 0 } on && /^BROKEN SVG/'
   if [ "$total" != "$in_source" ]; then
     echo "FAIL: $name has $in_source <svg> tags but chromium saw $total" >&2
@@ -131,7 +151,7 @@ if [ "$all_total" -eq 0 ]; then
   exit 1
 fi
 if [ "$all_broken" -ne 0 ] || [ "$failed" -ne 0 ]; then
-  echo "FAIL: $all_broken of $all_total plots in $dir did not render" >&2
+  echo "FAIL: $all_broken of $all_total plots in $dir did not render, or have overlapping labels" >&2
   exit 1
 fi
 echo "PASS: all $all_total plots in ${#pages[@]} pages of $dir rendered"

@@ -117,6 +117,17 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
       }
       (startsWith(a, "--cluster_tile=", value) ? settings.clusterGrid.tileSize : settings.clusterGrid.depthSlices) =
           int(n);
+    } else if (i > 0 && startsWith(a, "--field_size=", value)) {
+      const std::string text(value);
+      int width = 0, height = 0, used = 0;
+      if (std::sscanf(text.c_str(), "%dx%d%n", &width, &height, &used) != 2 || used != int(text.size()) ||
+          width < 16 || height < 16 || width > 4096 || height > 4096) {
+        std::fprintf(stderr, "render_bench: --field_size is WxH, each from 16 to 4096, not '%s'\n", text.c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
+      settings.fieldWidth = width;
+      settings.fieldHeight = height;
     } else if (i > 0 && startsWith(a, "--uniform_reads=", value)) {
       if (value == "opaque") settings.constantUniformReads = false;
       else if (value == "constant") settings.constantUniformReads = true;

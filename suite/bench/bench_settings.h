@@ -51,6 +51,10 @@ struct Settings {
   // --cluster_tile=N, --cluster_slices=N: the clustered mode's grid on
   // the fields and the light curve; the tile curve varies the tile.
   lighting::ClusterGridSpec clusterGrid;
+  // --field_size=WxH (tests only): the 64-light field at this size instead
+  // of the set's own (fieldSize), so a smoke test of a full-set mode draws
+  // and measures a small frame. Zero: the set's own.
+  int fieldWidth = 0, fieldHeight = 0;
   // The combination backend and driver select: its suffix names every
   // benchmark, and a slow driver (softpipe) runs the scaled-down set.
   const backends::BackendCombination* combination = nullptr;

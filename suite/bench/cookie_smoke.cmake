@@ -1,6 +1,6 @@
 # bench.cookie-smoke: render_bench --backend=vulkan (the full set: --quick
-# leaves the cookie pair out, one cookie frame costing about a second on
-# lavapipe) on the 64-light
+# leaves the cookie pair out) with the field at --quick's 320x180
+# (--field_size: a smoke test, not a measurement) on the 64-light
 # field's cookie pair (cookies on and off, SPEC 3.10 and 9) and the cookie
 # upload at 256 texels a side; it must exit 0, the two frames must carry the
 # load and error counters with 65 kept lights (64 point/spot, 1 directional),
@@ -10,7 +10,7 @@
 set(RENDER_BENCH_SET "")
 include(${CMAKE_CURRENT_LIST_DIR}/render_bench_smoke.cmake)
 run_render_bench("^(frame/vulkan/lights64-[0-9]+x[0-9]+/cookie(s|-lights)|upload/vulkan/lights64-[0-9]+x[0-9]+/cookies/256)(/|$)"
-                 --benchmark_repetitions=1)
+                 --benchmark_repetitions=1 --field_size=320x180)
 measured_entries()
 foreach(i IN LISTS indices)
   string(JSON name GET "${json}" benchmarks ${i} name)

@@ -63,6 +63,7 @@ bool isLightPathMode(const std::string& mode) {
 // were 90 of the full bench's 650 s); its error is still measured on every
 // mode, its speed is a reference rasterizer's.
 FieldSize fieldSize(const RunState& run) {
+  if (run.settings.fieldWidth > 0) return {run.settings.fieldWidth, run.settings.fieldHeight};
   if (run.slow()) return {160, 90};
   if (run.settings.quick) return {320, 180};
   return {1280, 720};

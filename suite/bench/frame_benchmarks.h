@@ -16,6 +16,8 @@ namespace bench {
 //   --scenes=DIR                        suite scenes (default: the source tree's suite/scenes)
 //   --suite_scenes                      also time every suite scene (frame kind)
 //   --cluster_tile=N, --cluster_slices=N the clustered mode's grid (default 16 pixels, 16 slices)
+//   --field_size=WxH                    tests only: the 64-light field at W x H, whatever the set
+//                                        (a smoke test of a full-set mode on a small frame)
 //   --mutant=NAME                       tests only: draw that mutant (shaders/shader_variant.h),
 //                                        a broken image to time (bench.broken-smoke)
 // Every other argument goes to Google Benchmark (--benchmark_out=FILE,

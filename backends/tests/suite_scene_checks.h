@@ -1,51 +1,38 @@
-// Every suite scene (frame 0) rendered on two backends, with its reference:
-// the loop of the tests that compare two backends, or two variants of one.
-// The reference is the one at the minimum bits (4), the loosest a conformant
-// device gets, from the build's reference cache ($LIGHTCTS_CACHE_DIR), which
-// the scenes' own tests fill: computed once per scene, not once per test.
+// The loop of the tests that hold a backend, or a variant of one, to every
+// suite scene's own comparison: the scene files in name order, each scene's
+// references from the build's reference cache ($LIGHTCTS_CACHE_DIR, which
+// the scenes' own tests fill: computed once per scene, not once per test),
+// SPEC 10's test names and the drivers' known mismatches.
 #pragma once
 
-#include "backends/backend.h"
 #include "baking/bake.h"
 #include "conformance/reference_cache.h"
 #include "conformance/scene_check.h"
-#include "lighting/frame.h"
 #include "lighting/scene_loader.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace backends::testing {
 
-struct SceneRenders {
-  std::filesystem::path file;
-  imaging::Image first;
-  imaging::Image second;
-  reference::ReferenceImages reference;
-};
-
-// Calls `check` once per scene file under `scenesDir`, in name order, and
-// returns how many there were.
-inline int forEachSuiteScene(const std::filesystem::path& scenesDir, Backend& first, Backend& second,
-                             const std::function<void(const SceneRenders&)>& check) {
+// Every scene file under `scenesDir` (<group>/<name>.json), in name order.
+inline std::vector<std::filesystem::path> suiteSceneFiles(const std::filesystem::path& scenesDir) {
   std::vector<std::filesystem::path> files;
   for (const auto& group : std::filesystem::directory_iterator(scenesDir))
     for (const auto& file : std::filesystem::directory_iterator(group.path()))
       if (file.path().extension() == ".json") files.push_back(file.path());
   std::sort(files.begin(), files.end());
-  for (const std::filesystem::path& file : files) {
-    lighting::Scene scene = lighting::loadSceneFile(file.string());
-    const auto caching = conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), file, scene);
-    conformance::SceneReferences references(baking::prepareBakedScene(std::move(scene)), caching);
-    const lighting::Frame& frame = references.frame(0);
-    check({file, first.render(frame), second.render(frame), references.reference(0)});
-  }
-  return int(files.size());
+  return files;
+}
+
+// The scene's references, read from and left in the build's reference cache.
+inline conformance::SceneReferences cachedSceneReferences(const std::filesystem::path& file, lighting::Scene scene) {
+  const auto caching = conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), file, scene);
+  return conformance::SceneReferences(baking::prepareBakedScene(std::move(scene)), caching);
 }
 
 // SPEC 10's name of a scene file's test on a combination: <group>.<name>.<suffix>.
@@ -55,8 +42,8 @@ inline std::string sceneTestName(const std::filesystem::path& file, const std::s
 
 // The tests the expected-failures files of `folder` (suite/expected-failures/,
 // one file per driver, each naming its own combinations' tests) list: the
-// drivers' known mismatches, which a test comparing two backends must not
-// count against them either. Only the names; the format is runner/expected_failures.h's.
+// drivers' known mismatches, which a test of a variant must not count
+// against them either. Only the names; the format is runner/expected_failures.h's.
 inline std::set<std::string> expectedFailingTests(const std::filesystem::path& folder) {
   std::set<std::string> tests;
   for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(folder)) {

@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Splits a `lightcts run`'s results.json into one file per test, for the
+scene tests of ctest (suite/scene_tests.cmake): OUT/<test>.txt holds one
+line, `<raw_verdict> <test>: <message or numbers>`, then the evidence page
+of a failure. With no results.json (the backend is not here: `run` exited
+3), OUT/NotSupported.txt holds the run's reason instead.
+
+    scene_run_verdicts.py RUN_DIR OUT_DIR [RUN_LOG]
+
+Exit 0 when the files are written; 1 when the run left nothing to read.
+"""
+import json
+import os
+import sys
+
+
+def line_of(test):
+    metrics = test.get('metrics') or {}
+    detail = test.get('message') or ''
+    if not detail and metrics:
+        detail = '%s failing of %s compared pixels (%s masked), max error %s, tightness %s' % (
+            metrics.get('failing_pixels'), metrics.get('compared_pixels'), metrics.get('masked_pixels'),
+            metrics.get('max_abs_error'), metrics.get('tightness'))
+    text = '%s %s: %s\n' % (test.get('raw_verdict', 'Crash'), test['name'], detail)
+    evidence = test.get('evidence') or {}
+    if evidence.get('viewer'):
+        text += 'evidence: %s\n' % evidence['viewer']
+    return text
+
+
+def main():
+    if len(sys.argv) not in (3, 4):
+        print(__doc__, file=sys.stderr)
+        return 2
+    run_dir, out_dir = sys.argv[1], sys.argv[2]
+    os.makedirs(out_dir, exist_ok=True)
+    results_path = os.path.join(run_dir, 'results.json')
+    if not os.path.exists(results_path):
+        log = ''
+        if len(sys.argv) == 4 and os.path.exists(sys.argv[3]):
+            with open(sys.argv[3], encoding='utf-8', errors='replace') as f:
+                log = f.read().strip()
+        if 'no backend asked for is present' not in log:
+            print('no results.json in %s:\n%s' % (run_dir, log))
+            return 1
+        with open(os.path.join(out_dir, 'NotSupported.txt'), 'w') as f:
+            f.write(log + '\n')
+        return 0
+    with open(results_path) as f:
+        results = json.load(f)
+    for test in results['tests']:
+        with open(os.path.join(out_dir, test['name'] + '.txt'), 'w') as f:
+            f.write(line_of(test))
+    print('%d verdicts in %s' % (len(results['tests']), out_dir))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
