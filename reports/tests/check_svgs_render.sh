@@ -4,7 +4,8 @@
 # non-zero bounding box (getBBox) and layout box, and drawn elements (paths,
 # lines, circles, text) of non-zero extent; that no point label overlaps
 # another label or a point (their getBBox boxes, as the browser laid them
-# out); and that the pages have at least one <svg> between them.
+# out); and that the pages have at least one <svg> between them. The
+# browser runs with every network access failing (file:// only).
 #
 #   check_svgs_render.sh DIR
 #
@@ -108,8 +109,10 @@ EOF
 
 started=$(date +%s%N)
 set +e
+# With every network access failing: the pages must work from file:// alone.
 timeout 90 "$chromium" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
   --no-default-browser-check --user-data-dir="$work/profile" --allow-file-access-from-files \
+  --proxy-server=127.0.0.1:9 --host-resolver-rules='MAP * ~NOTFOUND' \
   --virtual-time-budget=5000 --dump-dom "file://$work/check.html" > "$work/dom.html" 2> "$work/chromium.log"
 status=$?
 set -e
