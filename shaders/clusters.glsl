@@ -28,7 +28,7 @@ bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts[opaque
 // read the matrix (measured; the other drivers did not), which fits its
 // per-bind recompiles (docs/vendors.md, "lavapipe recompiles": the matrix's
 // loads change how much inlining removes, and so whether it keeps inlining),
-// measured before the steering uniforms were read at opaque offsets.
+// measured with the steering uniforms read at constant offsets.
 int clusterOf(vec4 clip, vec3 p) {
   vec2 ndc = clip.xy / clip.w;
   vec2 pixel = vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * frameData.clusterScreen.xy;

@@ -233,7 +233,7 @@ TEST_F(BakeCacheTest, TwoFlippedSignBitsAtOddWordsAreAMiss) {
   std::vector<std::uint8_t> damaged = bytes;
   for (std::size_t at : flips) damaged[at + 3] ^= 0x80;
   ASSERT_NE(damaged, bytes);
-  // The very damage the old checksum cannot see.
+  // The very damage an FNV-1a over 64-bit words cannot see (so the cache uses XXH3).
   ASSERT_EQ(fnv1aOverWords(damaged, checksumAt), fnv1aOverWords(bytes, checksumAt));
   std::ofstream(file, std::ios::binary | std::ios::trunc)
       .write(reinterpret_cast<const char*>(damaged.data()), std::streamsize(damaged.size()));

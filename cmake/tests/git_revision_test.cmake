@@ -4,8 +4,8 @@
 # "unknown"; after `git init` and a commit, a plain rebuild (no re-configure)
 # says that commit; a rebuild with nothing new rewrites nothing; a second
 # commit, again with no re-configure, changes it; an edit adds "-dirty".
-# A configure-time `git describe` (the old runner/CMakeLists.txt) stays
-# "unknown" after the first commit and fails at that step.
+# A configure-time `git describe` would stay "unknown" after the first
+# commit and fail at that step.
 #
 #   cmake -DMODULE=<cmake/git_revision.cmake> -DWORK=<scratch folder> [-DGENERATOR=Ninja]
 #         -P git_revision_test.cmake

@@ -98,8 +98,8 @@ TEST(ReferenceRenderer, CoplanarSurfacesAreMasked) {
 }
 
 // The scene's tolerance_scale is applied by the comparison, once; the
-// reference's tolerance is the derivation alone (it used to be scaled here
-// and again in the comparison).
+// reference's tolerance is the derivation alone (scaling it here as well
+// would apply the scale twice).
 TEST(ReferenceRenderer, TolerancesArePositiveFiniteAndUnscaled) {
   Scene s = smallScene();
   s.objects.push_back(plane(20));

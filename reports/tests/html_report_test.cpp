@@ -172,7 +172,8 @@ TEST(HtmlReport, UnknownVerdictIsAFailureThatNeedsAttention) {
 }
 
 // The backend table has a Flake column only when a flake occurred, so the
-// report of a run without retries is what it was before Flake existed.
+// report of a run without retries has the six verdict columns of
+// results.json's version 1.
 TEST(HtmlReport, FlakeColumnOnlyWhenAFlakeOccurred) {
   EXPECT_EQ(sampleHtml().find("<th>Flake</th>"), std::string::npos);
   EXPECT_NE(sampleHtml().find("<th>UnexpectedPass</th><th>wall s</th>"), std::string::npos);

@@ -61,7 +61,7 @@ TEST(ShaderVariant, EveryMutantNameRoundTrips) {
 }
 
 // SPEC 7: each mutant must be caught on every backend, so each needs its
-// scenes in the ctest table (suite/mutant_tests.cmake: "<name>=<scenes>").
+// scenes in the killers' table (suite/mutant_killers.def).
 // That every mutant has killers is checked beside the killers' table
 // (conformance/tests/mutant_killers_test.cpp).
 
