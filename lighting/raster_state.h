@@ -33,4 +33,9 @@ inline constexpr RasterState kOpaqueSurfaceState{CullMode::Back, DepthCompare::L
 // RasterState never enables.
 inline constexpr RasterState kShadowCasterState{CullMode::None, DepthCompare::Less, true, false};
 
+// SPEC 3.9: a lookup into a shadow map is lit when the point's depth is at
+// most the texel's, so the shadow samplers compare LESS_OR_EQUAL (the
+// shadow-compare-less mutant, shaders::shadowLookupCompare, makes it LESS).
+inline constexpr DepthCompare kShadowLookupCompare = DepthCompare::LessOrEqual;
+
 }  // namespace lighting

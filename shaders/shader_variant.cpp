@@ -84,6 +84,10 @@ std::string_view mutantName(Mutant mutant) {
   return "none";
 }
 
+lighting::DepthCompare shadowLookupCompare(Mutant mutant) {
+  return mutant == Mutant::ShadowCompareLess ? lighting::DepthCompare::Less : lighting::kShadowLookupCompare;
+}
+
 lighting::VolumeRule volumeRule(Mutant mutant) {
   return mutant == Mutant::PointVolumeOutsideOnly ? lighting::VolumeRule::OutsideOnlyMutant
                                                   : lighting::VolumeRule::Model;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "lighting/deferred_lights.h"
+#include "lighting/raster_state.h"
 
 #include <optional>
 #include <string>
@@ -85,5 +86,9 @@ struct ShaderVariant {
 // The rule the light pass draws volumes by under `mutant`: the only
 // pipeline-state mutant changes it, every other mutant leaves the model's.
 lighting::VolumeRule volumeRule(Mutant mutant);
+
+// The compare the shadow samplers use under `mutant`: the model's
+// (lighting::kShadowLookupCompare), or LESS under shadow-compare-less.
+lighting::DepthCompare shadowLookupCompare(Mutant mutant);
 
 }  // namespace shaders

@@ -35,7 +35,7 @@ void bindShadowInterface(const GlFunctions& gl, GLuint program) {
 }
 
 ShadowMaps::ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant)
-    : gl_(gl), compareFunc_(mutant == shaders::Mutant::ShadowCompareLess ? GL_LESS : GL_LEQUAL) {
+    : gl_(gl), compareFunc_(GLint(toGl(shaders::shadowLookupCompare(mutant)))) {
   // GL 3.3 promises 48 combined units; the units above end at 20.
   GLint units = 0;
   gl_.glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);

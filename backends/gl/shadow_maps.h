@@ -85,7 +85,7 @@ class ShadowMaps {
   void drawViews(const SceneDraws& scene, float farDepth);
 
   const GlFunctions& gl_;
-  GLint compareFunc_ = GL_LEQUAL;
+  GLint compareFunc_ = GL_LEQUAL;  // SPEC 3.9 (shaders::shadowLookupCompare)
   GLint maxSize_ = 0, maxCubeSize_ = 0;
   GlName block_, passBlocks_, framebuffer_, timer_;
   std::size_t passStride_ = 0;

@@ -3,6 +3,7 @@
 #include "backends/aligned_stride.h"
 #include "backends/backend.h"
 #include "backends/vulkan/forward_pipeline.h"
+#include "backends/vulkan/raster_translation.h"
 #include "backends/vulkan/scene_pass.h"
 #include "shaders/embedded_spirv.h"
 
@@ -66,9 +67,8 @@ ShadowMaps::ShadowMaps(const VulkanDevice& device, const PipelineCacheFile& cach
       stages_(device.device, shaders::shadowCasterVertexSpirv(), shaders::shadowCasterFragmentSpirv()),
       viewStride_(alignedStride(sizeof(lighting::GpuMat4), device.limits.minUniformBufferOffsetAlignment)),
       viewBlocks_(device, viewStride_ * kMostViews, vk::BufferUsageFlagBits::eUniformBuffer) {
-  // SPEC 3.9: lit when depth(p') <= texel; the mutant shadows equal depths.
-  const vk::CompareOp compare =
-      mutant == shaders::Mutant::ShadowCompareLess ? vk::CompareOp::eLess : vk::CompareOp::eLessOrEqual;
+  // SPEC 3.9's compare, decided beside the raster state (lighting/raster_state.h).
+  const vk::CompareOp compare = toVulkan(shaders::shadowLookupCompare(mutant));
   // A map is rendered as a depth attachment and sampled with a compare.
   // Filtering the compares linearly (bilinear, tent3x3) needs no
   // FILTER_LINEAR feature: Vulkan asks for that only of samplers without a

@@ -65,5 +65,16 @@ TEST(ShaderVariant, EveryMutantNameRoundTrips) {
 // That every mutant has killers is checked beside the killers' table
 // (conformance/tests/mutant_killers_test.cpp).
 
+// SPEC 3.9: lit when depth(p') <= texel. Only shadow-compare-less changes
+// the samplers' compare, and only to LESS.
+TEST(ShaderVariant, OnlyTheShadowCompareMutantChangesTheShadowLookupCompare) {
+  EXPECT_EQ(lighting::kShadowLookupCompare, lighting::DepthCompare::LessOrEqual);
+  for (const MutantName& m : mutantNames())
+    EXPECT_EQ(shadowLookupCompare(m.mutant),
+              m.mutant == Mutant::ShadowCompareLess ? lighting::DepthCompare::Less : lighting::DepthCompare::LessOrEqual)
+        << m.name;
+  EXPECT_EQ(shadowLookupCompare(Mutant::None), lighting::DepthCompare::LessOrEqual);
+}
+
 }  // namespace
 }  // namespace shaders
