@@ -5,6 +5,7 @@
 // Front faces are counter-clockwise in the image (SPEC 1) for every pass.
 #pragma once
 
+#include <array>
 #include <compare>
 
 namespace lighting {
@@ -32,6 +33,17 @@ inline constexpr RasterState kOpaqueSurfaceState{CullMode::Back, DepthCompare::L
 // rasteriser depth bias (its slope term is implementation-defined), which
 // RasterState never enables.
 inline constexpr RasterState kShadowCasterState{CullMode::None, DepthCompare::Less, true, false};
+
+// What the passes clear to, decided once for both backends: depth to the far
+// plane (1: with LESS the nearest surface wins; SPEC 3.9, 1 where no
+// triangle covers a shadow-map texel); the image to the background, value 0
+// (SPEC 6) with alpha 1 (SPEC 8: `render` writes A = 1); the G-buffer to 0
+// (albedo.a = 0 marks the background for the light pass).
+// The deferred light buffer clears to its blend's identity
+// (lighting::lightBufferState, deferred_lights.h).
+inline constexpr float kClearDepth = 1.0f;
+inline constexpr std::array<float, 4> kBackgroundClear{0.0f, 0.0f, 0.0f, 1.0f};
+inline constexpr std::array<float, 4> kGbufferClear{0.0f, 0.0f, 0.0f, 0.0f};
 
 // SPEC 3.9: a lookup into a shadow map is lit when the point's depth is at
 // most the texel's, so the shadow samplers compare LESS_OR_EQUAL (the

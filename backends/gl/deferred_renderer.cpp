@@ -7,12 +7,6 @@
 #include <cstring>
 
 namespace backends::gl {
-namespace {
-
-// The G-buffer's clear: albedo.a = 0 marks the background for the light pass.
-constexpr float kGbufferClear[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-
-}  // namespace
 
 DeferredRenderer::DeferredRenderer(const GlFunctions& gl, const shaders::ShaderVariant& variant)
     : gl_(gl), variant_(variant), volumeRule_(shaders::volumeRule(variant.mutant)), programs_(gl), targets_(gl) {
@@ -55,9 +49,8 @@ void DeferredRenderer::beginFrame(const lighting::Frame& frame, const std::vecto
   gl_.glViewport(0, 0, width_, height_);
   // A clear honours the depth mask, which the light pass turns off.
   gl_.glDepthMask(GL_TRUE);
-  const float farDepth = 1.0f;
-  for (int t = 0; t < kGbufferColourCount; ++t) gl_.glClearBufferfv(GL_COLOR, t, kGbufferClear);
-  gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+  for (int t = 0; t < kGbufferColourCount; ++t) gl_.glClearBufferfv(GL_COLOR, t, lighting::kGbufferClear.data());
+  gl_.glClearBufferfv(GL_DEPTH, 0, &lighting::kClearDepth);
   gl_.check("preparing the deferred frame");
 }
 

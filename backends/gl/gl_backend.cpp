@@ -229,10 +229,9 @@ class GlBackend final : public Backend {
     gl_.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     gl_.glViewport(0, 0, width_, height_);
     applyOpaqueSurfaceState(gl_);
-    const float background[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // value 0 (SPEC 6), alpha 1 (SPEC 8)
-    const float farDepth = 1.0f;
-    gl_.glClearBufferfv(GL_COLOR, 0, background);
-    gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    // lighting/raster_state.h: the background and the far depth.
+    gl_.glClearBufferfv(GL_COLOR, 0, lighting::kBackgroundClear.data());
+    gl_.glClearBufferfv(GL_DEPTH, 0, &lighting::kClearDepth);
   }
 
   BackendOptions options_;

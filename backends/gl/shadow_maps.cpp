@@ -101,9 +101,8 @@ void ShadowMaps::render(const lighting::Frame& frame, const shaders::ConstantVal
   applyRasterState(gl_, lighting::kShadowCasterState);
   gl_.glDisable(GL_BLEND);
   gl_.glUseProgram(program);
-  const float farDepth = 1.0f;  // SPEC 3.9: 1 where no triangle covers a texel
   try {
-    drawViews(scene, farDepth);
+    drawViews(scene);
   } catch (...) {
     // An incomplete framebuffer past the first view: the query must not
     // stay active into the next frame's glBeginQuery.
@@ -119,7 +118,7 @@ void ShadowMaps::render(const lighting::Frame& frame, const shaders::ConstantVal
   gl_.check("rendering the shadow maps");
 }
 
-void ShadowMaps::drawViews(const SceneDraws& scene, float farDepth) {
+void ShadowMaps::drawViews(const SceneDraws& scene) {
   for (std::size_t v = 0; v < views_.size(); ++v) {
     const lighting::ShadowPassView& view = views_[v];
     attach(view);
@@ -127,7 +126,7 @@ void ShadowMaps::drawViews(const SceneDraws& scene, float farDepth) {
     // the lookup's v = mv reads. SPIRV-Cross's clip-z fixup and GL's
     // default depth range [0, 1] store Vulkan's z/w.
     gl_.glViewport(0, 0, view.resolution, view.resolution);
-    gl_.glClearBufferfv(GL_DEPTH, 0, &farDepth);
+    gl_.glClearBufferfv(GL_DEPTH, 0, &lighting::kClearDepth);  // SPEC 3.9: 1 where no triangle covers a texel
     // The query begins after the first clear, as the backend's draw timer
     // does and for its reason (llvmpipe bins a query's start into the
     // framebuffer the driver has bound, which the first clear binds).

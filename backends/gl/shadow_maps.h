@@ -81,8 +81,8 @@ class ShadowMaps {
   // with `none`, while the passes render into them).
   void bindTextures(bool none) const;
   void attach(const lighting::ShadowPassView& view);
-  // render()'s passes: per view attach, clear to `farDepth`, draw every object.
-  void drawViews(const SceneDraws& scene, float farDepth);
+  // render()'s passes: per view attach, clear to the far depth (lighting::kClearDepth), draw every object.
+  void drawViews(const SceneDraws& scene);
 
   const GlFunctions& gl_;
   GLint compareFunc_ = GL_LEQUAL;  // SPEC 3.9 (shaders::shadowLookupCompare)

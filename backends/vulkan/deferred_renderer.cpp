@@ -107,7 +107,7 @@ void DeferredRenderer::recordGBufferPass(const vk::raii::CommandBuffer& commands
                                          const SceneBakedTextures& maps) const {
   // Everything cleared to 0: albedo.a = 0 marks the background for the light pass.
   std::array<vk::RenderingAttachmentInfo, kGBufferImageCount> colors;
-  for (std::size_t i = 0; i < kGBufferImageCount; ++i) colors[i] = clearedColor(targets_->gbuffer[i], 0.0f, 0.0f);
+  for (std::size_t i = 0; i < kGBufferImageCount; ++i) colors[i] = clearedColor(targets_->gbuffer[i], lighting::kGbufferClear);
   recordSceneObjectsPass(commands, geometry,
                          {.colors = colors,
                           // Stored: the light pass tests against it.
@@ -123,7 +123,7 @@ void DeferredRenderer::recordGBufferPass(const vk::raii::CommandBuffer& commands
 void DeferredRenderer::recordLightPass(const vk::raii::CommandBuffer& commands) const {
   // The blend's identity (lighting::lightBufferState).
   const float clear = lighting::lightBufferState(buffer_).clearValue;
-  const vk::RenderingAttachmentInfo color = clearedColor(targets_->lightBuffer, clear, clear);
+  const vk::RenderingAttachmentInfo color = clearedColor(targets_->lightBuffer, {clear, clear, clear, clear});
   // The G-buffer depth, read-only: tested, never written, never sampled.
   const vk::RenderingAttachmentInfo depth{
       .imageView = *targets_->depth.view,
@@ -156,7 +156,7 @@ void DeferredRenderer::recordLightPass(const vk::raii::CommandBuffer& commands) 
 
 void DeferredRenderer::recordCompositePass(const vk::raii::CommandBuffer& commands, const RenderTarget& output) const {
   // The triangle covers every pixel; the clear only keeps A = 1 obvious.
-  const vk::RenderingAttachmentInfo color = clearedColor(output.color, 0.0f, 1.0f);
+  const vk::RenderingAttachmentInfo color = clearedColor(output.color, lighting::kBackgroundClear);
   commands.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, output.color.extent},
                                             .layerCount = 1,
                                             .colorAttachmentCount = 1,

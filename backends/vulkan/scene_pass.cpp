@@ -1,5 +1,7 @@
 #include "backends/vulkan/scene_pass.h"
 
+#include "lighting/raster_state.h"
+
 #include <array>
 
 namespace backends::vulkan {
@@ -62,12 +64,12 @@ void recordBarriers(const vk::raii::CommandBuffer& commands, std::span<const vk:
       vk::DependencyInfo{.imageMemoryBarrierCount = std::uint32_t(images.size()), .pImageMemoryBarriers = images.data()});
 }
 
-vk::RenderingAttachmentInfo clearedColor(const DeviceImage& image, float value, float alpha) {
+vk::RenderingAttachmentInfo clearedColor(const DeviceImage& image, const std::array<float, 4>& rgba) {
   return {.imageView = *image.view,
           .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
           .loadOp = vk::AttachmentLoadOp::eClear,
           .storeOp = vk::AttachmentStoreOp::eStore,
-          .clearValue = vk::ClearColorValue(std::array<float, 4>{value, value, value, alpha})};
+          .clearValue = vk::ClearColorValue(rgba)};
 }
 
 vk::RenderingAttachmentInfo clearedDepth(const DeviceImage& image, vk::AttachmentStoreOp store) {
@@ -75,7 +77,7 @@ vk::RenderingAttachmentInfo clearedDepth(const DeviceImage& image, vk::Attachmen
           .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
           .loadOp = vk::AttachmentLoadOp::eClear,
           .storeOp = store,
-          .clearValue = vk::ClearDepthStencilValue{1.0f, 0}};
+          .clearValue = vk::ClearDepthStencilValue{lighting::kClearDepth, 0}};
 }
 
 void setFlippedViewport(const vk::raii::CommandBuffer& commands, vk::Extent2D extent) {

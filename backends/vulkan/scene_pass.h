@@ -11,6 +11,7 @@
 #include "backends/vulkan/gpu_memory.h"
 #include "backends/vulkan/scene_geometry.h"
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -29,7 +30,7 @@ vk::ImageMemoryBarrier2 colorAttachmentToSampled(const DeviceImage& image);
 vk::ImageMemoryBarrier2 depthAttachmentToReadOnly(const DeviceImage& image);
 void recordBarriers(const vk::raii::CommandBuffer& commands, std::span<const vk::ImageMemoryBarrier2> images);
 
-vk::RenderingAttachmentInfo clearedColor(const DeviceImage& image, float value, float alpha);
+vk::RenderingAttachmentInfo clearedColor(const DeviceImage& image, const std::array<float, 4>& rgba);
 vk::RenderingAttachmentInfo clearedDepth(const DeviceImage& image, vk::AttachmentStoreOp store);
 
 // Negative height: NDC y = +1 (up, lighting::CameraView) lands on framebuffer

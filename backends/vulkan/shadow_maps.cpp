@@ -54,7 +54,7 @@ vk::RenderingAttachmentInfo clearedDepthView(vk::ImageView view) {
           .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
           .loadOp = vk::AttachmentLoadOp::eClear,
           .storeOp = vk::AttachmentStoreOp::eStore,
-          .clearValue = vk::ClearDepthStencilValue{1.0f, 0}};
+          .clearValue = vk::ClearDepthStencilValue{lighting::kClearDepth, 0}};
 }
 
 }  // namespace

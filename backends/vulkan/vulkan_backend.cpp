@@ -191,7 +191,7 @@ class VulkanBackend final : public Backend {
     cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kClusterListsSetIndex,
                           {clusters_.set()}, {});
     // Background: value 0 (SPEC 6), alpha 1 (SPEC 8).
-    const std::array<vk::RenderingAttachmentInfo, 1> color{clearedColor(target_->color, 0.0f, 1.0f)};
+    const std::array<vk::RenderingAttachmentInfo, 1> color{clearedColor(target_->color, lighting::kBackgroundClear)};
     recordSceneObjectsPass(cb, *geometry_,
                            {.colors = color,
                             .depth = clearedDepth(target_->depth, vk::AttachmentStoreOp::eDontCare),
