@@ -6,7 +6,7 @@
 #include "baking/overlap_map.h"
 #include "imaging/atomic_file.h"
 #include "imaging/image_files.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <nlohmann/json.hpp>
 

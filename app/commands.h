@@ -33,7 +33,7 @@ int runBackendsCommand(const std::string& driver, std::ostream& out, std::ostrea
 int runProbeDriverCommand(const std::string& backend, const std::string& driver, std::ostream& out,
                           std::ostream& err);
 // `sceneJson` (extension, docs/cli.md): for a glTF file, the scene file that
-// draws it (lighting/gltf_scene_json.h) instead of the selection.
+// draws it (scene_input/gltf_scene_json.h) instead of the selection.
 int runLightsCommand(const SceneArguments& args, bool sceneJson, std::ostream& out, std::ostream& err);
 // `toleranceTerms` (extension, docs/cli.md): also DIR/tolerance-arithmetic.exr
 // and DIR/tolerance-shift.exr, the two parts of tolerance.exr.

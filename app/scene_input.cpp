@@ -5,7 +5,7 @@
 #include "backends/backend.h"
 #include "baking/bake.h"
 #include "imaging/image_files.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <filesystem>
 #include <functional>

@@ -1,7 +1,7 @@
 #include "runner/run_budgets.h"
 
 #include "baking/bake.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "reference/light_budget.h"
 #include "reports/budget_maps.h"
 #include "runner/budget_files.h"

@@ -5,7 +5,7 @@
 #include "conformance/mutant_killers.h"
 #include "conformance/scene_catalogue.h"
 #include "runner/run_budgets.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "runner/expected_failures.h"
 #include "runner/part_run.h"
 #include "runner/part_scheduler.h"

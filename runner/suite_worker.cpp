@@ -5,7 +5,7 @@
 #include "comparison/comparison_report.h"
 #include "comparison/verdict.h"
 #include "conformance/scene_check.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <csignal>
 #include <cmath>

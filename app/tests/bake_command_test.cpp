@@ -5,7 +5,7 @@
 #include "baking/bake.h"
 #include "baking/overlap_map.h"
 #include "imaging/image_files.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

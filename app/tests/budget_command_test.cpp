@@ -7,7 +7,7 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "reference/light_budget.h"
 
 #include <gtest/gtest.h>

@@ -21,7 +21,7 @@
 #include "backends/tests/backend_combinations.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

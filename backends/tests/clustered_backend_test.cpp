@@ -20,7 +20,7 @@
 #include "conformance/scene_check.h"
 #include "lighting/gpu_packing.h"
 #include "lighting/light_clusters.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

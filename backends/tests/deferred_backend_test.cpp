@@ -19,7 +19,7 @@
 #include "backends/backend.h"
 #include "backends/tests/backend_combinations.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

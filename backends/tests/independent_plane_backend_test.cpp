@@ -32,7 +32,7 @@
 #include "backends/tests/backend_combinations.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "testing/independent_plane/independent_plane_model.h"
 
 #include <glm/common.hpp>

@@ -8,7 +8,7 @@
 #include "baking/bake.h"
 #include "conformance/reference_cache.h"
 #include "conformance/scene_check.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -7,7 +7,7 @@
 #include "backends/vulkan/vulkan_device.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "reference/reference_renderer.h"
 
 #include <gtest/gtest.h>

@@ -13,7 +13,7 @@
 #include "backends/backend.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

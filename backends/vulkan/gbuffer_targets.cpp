@@ -1,7 +1,7 @@
 #include "backends/vulkan/gbuffer_targets.h"
 
 #include "backends/vulkan/forward_pipeline.h"
-#include "lighting/scene_loader.h"
+#include "lighting/scene_words.h"
 
 #include <string>
 

@@ -7,7 +7,7 @@
 #include "reference/light_budget.h"
 
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // cases (a receiver compared against its own depth, a texel at a box's
 // silhouette, a lookup on a texel boundary).
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "reference/bvh.h"
 #include "reference/reference_renderer.h"
 #include "reference/shadow_maps.h"

@@ -1,6 +1,7 @@
 #include "suite/bench/bench_scenes.h"
 
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
+#include "lighting/scene_words.h"
 
 #include <glm/geometric.hpp>
 

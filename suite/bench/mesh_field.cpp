@@ -7,7 +7,7 @@
 // buffer) beside the synthetic field, each against its own ideal; the page
 // shows each frame's triangle count. Without the package the family is left
 // out with a note on stderr (scripts/setup.sh installs it).
-#include "lighting/gltf_import.h"
+#include "scene_input/gltf_import.h"
 #include "suite/bench/bench_families.h"
 #include "suite/bench/bench_scenes.h"
 

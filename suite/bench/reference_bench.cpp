@@ -4,7 +4,7 @@
 // pixels and pixel-light evaluations per second, tolerance shading included.
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "reference/reference_renderer.h"
 
 #include <benchmark/benchmark.h>

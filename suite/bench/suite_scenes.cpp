@@ -4,7 +4,7 @@
 // ideal reference.
 #include "baking/bake.h"
 #include "conformance/scene_catalogue.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 #include "suite/bench/bench_families.h"
 #include "suite/bench/bench_scenes.h"
 

@@ -3,7 +3,7 @@
 #include "testing/independent_plane/independent_plane_model.h"
 
 #include "lighting/frame.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "lighting/imported_mesh.h"
+#include "scene_input/imported_mesh.h"
 
 #include <glm/geometric.hpp>
 

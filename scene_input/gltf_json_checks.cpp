@@ -1,7 +1,7 @@
-#include "lighting/gltf_json_checks.h"
+#include "scene_input/gltf_json_checks.h"
 
-#include "lighting/gltf_import.h"
-#include "lighting/json_describe.h"
+#include "scene_input/gltf_import.h"
+#include "scene_input/json_describe.h"
 
 #include <cmath>
 #include <map>

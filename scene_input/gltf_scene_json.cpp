@@ -1,4 +1,4 @@
-#include "lighting/gltf_scene_json.h"
+#include "scene_input/gltf_scene_json.h"
 
 namespace lighting {
 namespace {

@@ -1,6 +1,6 @@
-#include "lighting/gltf_accessors.h"
+#include "scene_input/gltf_accessors.h"
 
-#include "lighting/gltf_import.h"
+#include "scene_input/gltf_import.h"
 
 #include <cmath>
 #include <cstring>

@@ -3,8 +3,8 @@
 // 3.3) at every corner of the bounds; glTF files without lights get it, files
 // with lights keep theirs, and an import may ask for it.
 #include "lighting/default_rig.h"
-#include "lighting/gltf_scene_json.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/gltf_scene_json.h"
+#include "scene_input/scene_loader.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

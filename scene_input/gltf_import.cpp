@@ -1,8 +1,8 @@
-#include "lighting/gltf_import.h"
+#include "scene_input/gltf_import.h"
 
-#include "lighting/gltf_accessors.h"
-#include "lighting/gltf_json_checks.h"
-#include "lighting/imported_mesh.h"
+#include "scene_input/gltf_accessors.h"
+#include "scene_input/gltf_json_checks.h"
+#include "scene_input/imported_mesh.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>

@@ -39,9 +39,4 @@ Scene loadSceneFile(const std::string& path);
 // Validates scene text; `sourceName` is used as the file name in messages.
 Scene loadSceneText(std::string_view text, const std::string& sourceName);
 
-// The scene-format name of a light buffer (SPEC 2 `pipeline.deferred_buffer`:
-// "hdr32", "hdr16", "ldr8"), from the table the loader reads it with, so
-// whoever names a buffer (benchmark modes, messages) uses the file's words.
-std::string_view deferredBufferName(DeferredBuffer buffer);
-
 }  // namespace lighting

@@ -1,7 +1,7 @@
 // SPEC 2's `cookie` (SPEC 3.10): the loader reads the images, relative to the
 // scene file, and refuses bad ones with the JSON path and the file.
 #include "imaging/image_files.h"
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,15 @@
 // Reads a scene file into lighting::Scene and rejects everything SPEC section 2
 // calls an error. docs/scene-format.md lists every key with its type, default
 // and range, and the rules SPEC leaves open that this file decides.
-#include "lighting/scene_loader.h"
+#include "scene_input/scene_loader.h"
 
 #include "imaging/image_files.h"
 
 #include "lighting/default_rig.h"
-#include "lighting/gltf_import.h"
-#include "lighting/json_describe.h"
-#include "lighting/json_locations.h"
+#include "scene_input/gltf_import.h"
+#include "scene_input/json_describe.h"
+#include "scene_input/json_locations.h"
+#include "lighting/scene_words.h"
 #include "lighting/transform.h"
 #include "lighting/visible_lights.h"
 
@@ -133,10 +134,7 @@ constexpr Bounds atLeast(double min) { return {min, false, kInfinity, false}; }
 constexpr Bounds closed(double min, double max) { return {min, false, max, false}; }
 
 template <typename T>
-struct Choice {
-  std::string_view name;
-  T value;
-};
+using Choice = SceneWord<T>;  // lighting/scene_words.h
 
 template <typename T, std::size_t N>
 std::string_view choiceName(const std::array<Choice<T>, N>& choices, T value) {
@@ -220,8 +218,7 @@ constexpr std::array<Choice<Brdf>, 2> kBrdfs{{{"lambert", Brdf::Lambert}, {"srp"
 constexpr std::array<Choice<Profile>, 2> kProfiles{{{"srp", Profile::Srp}, {"legacy", Profile::Legacy}}};
 constexpr std::array<Choice<RenderPath>, 2> kRenderPaths{
     {{"forward", RenderPath::Forward}, {"deferred", RenderPath::Deferred}}};
-constexpr std::array<Choice<DeferredBuffer>, 3> kDeferredBuffers{
-    {{"hdr32", DeferredBuffer::Hdr32}, {"hdr16", DeferredBuffer::Hdr16}, {"ldr8", DeferredBuffer::Ldr8}}};
+constexpr const auto& kDeferredBuffers = kDeferredBufferWords;
 // Extension of SPEC 2 (docs/scene-format.md, `expect.against`).
 constexpr std::array<Choice<CompareAgainst>, 2> kCompareAgainst{
     {{"reference", CompareAgainst::Reference}, {"realtime", CompareAgainst::Realtime}}};
@@ -1216,8 +1213,6 @@ Scene loadSceneText(std::string_view text, const std::string& sourceName) {
   scene.sourcePath = sourceName;
   return scene;
 }
-
-std::string_view deferredBufferName(DeferredBuffer buffer) { return choiceName(kDeferredBuffers, buffer); }
 
 Scene loadSceneFile(const std::string& path) {
   if (isGltfPath(path)) {

@@ -1,4 +1,4 @@
-#include "lighting/json_locations.h"
+#include "scene_input/json_locations.h"
 
 #include <string>
 
