@@ -145,7 +145,7 @@ std::vector<PlacedLabel> placeLabels(const std::vector<LabelRequest>& requests, 
       taken.push_back(box);
       const LabelRequest& first = requests[g.members.front()];
       // The first twelve places touch the group; the rest need a line to it.
-      placed.push_back({text, title, box.x0, box.y0 + 9.5, g.front, k >= 12, first.px, first.py, box});
+      placed.push_back({text, title, g.front, k >= 12, first.px, first.py, box});
       break;
     }
   }

@@ -28,11 +28,10 @@ struct LabelRequest {
 struct PlacedLabel {
   std::string text;   // the point's label, or the group's
   std::string title;  // every member's hover text, one a line
-  double x, y;        // the text's start and baseline
   bool bold = false;
   bool leader = false;  // draw a line from (px, py) to the box
   double px, py;        // the point (the group's first) the label belongs to
-  LabelBox box;
+  LabelBox box;         // the text starts at box.x0, its baseline at box.y0 + kLabelBaseline
 };
 
 inline constexpr double kLabelFontSize = 10;
@@ -41,6 +40,9 @@ inline constexpr double kLabelFontSize = 10;
 // slightly wider font still fits its box.
 inline constexpr double kLabelCharWidth = 6.2;
 inline constexpr double kLabelHeight = 12;
+// The baseline below a box's top: the font's ascent (0.93 em) and descent
+// (0.24 em) both inside the box.
+inline constexpr double kLabelBaseline = 9.5;
 
 // Places the labels of `requests` inside `frame`, clear of `markers` (each
 // point's box) and of each other; a request that finds no place is left out.

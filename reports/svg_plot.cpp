@@ -238,7 +238,8 @@ std::string render(const Plot& plot) {
       out << "<line class=\"leader\" x1=\"" << num(l.px) << "\" y1=\"" << num(l.py) << "\" x2=\"" << num(lx)
           << "\" y2=\"" << num(ly) << "\" stroke=\"#999\" stroke-width=\"0.8\"/>\n";
     }
-    out << "<text x=\"" << num(l.x) << "\" y=\"" << num(l.y) << "\"" << (l.bold ? " font-weight=\"bold\"" : "")
+    out << "<text x=\"" << num(l.box.x0) << "\" y=\"" << num(l.box.y0 + kLabelBaseline) << "\""
+        << (l.bold ? " font-weight=\"bold\"" : "")
         << "><title>" << escapeText(l.title) << "</title>" << escapeText(l.text) << "</text>\n";
   }
   out << "</g>\n";

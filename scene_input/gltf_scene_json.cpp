@@ -1,5 +1,7 @@
 #include "scene_input/gltf_scene_json.h"
 
+#include "lighting/scene_words.h"
+
 namespace lighting {
 namespace {
 
@@ -7,24 +9,11 @@ using Json = nlohmann::ordered_json;
 
 Json vec3(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
-const char* lightTypeWord(LightType type) {
-  switch (type) {
-    case LightType::Directional: return "directional";
-    case LightType::Point: return "point";
-    case LightType::Spot: return "spot";
-  }
-  return "spot";
-}
-
 Json cameraJson(const Camera& camera) {
   Json out = {{"position", vec3(camera.position)}, {"target", vec3(camera.target)}, {"up", vec3(camera.up)}};
-  if (camera.projection == Projection::Perspective) {
-    out["projection"] = "perspective";
-    out["fov_y_deg"] = camera.fovYDeg;
-  } else {
-    out["projection"] = "orthographic";
-    out["height"] = camera.orthoHeight;
-  }
+  out["projection"] = wordOf(kProjectionWords, camera.projection);
+  if (camera.projection == Projection::Perspective) out["fov_y_deg"] = camera.fovYDeg;
+  else out["height"] = camera.orthoHeight;
   out["near"] = camera.nearPlane;
   out["far"] = camera.farPlane;
   return out;
@@ -33,7 +22,7 @@ Json cameraJson(const Camera& camera) {
 // The keys a bare import's light can carry: glTF's, and the range it was
 // given (SPEC 2.1: what glTF has no word for keeps the scene format's default).
 Json lightJson(const Light& light) {
-  Json out = {{"name", light.name}, {"type", lightTypeWord(light.type)}};
+  Json out = {{"name", light.name}, {"type", wordOf(kLightTypeWords, light.type)}};
   if (light.type != LightType::Directional) out["position"] = vec3(light.position);
   if (light.type != LightType::Point) out["direction"] = vec3(light.direction);
   if (light.type != LightType::Directional) out["range"] = light.range;

@@ -136,13 +136,6 @@ constexpr Bounds closed(double min, double max) { return {min, false, max, false
 template <typename T>
 using Choice = SceneWord<T>;  // lighting/scene_words.h
 
-template <typename T, std::size_t N>
-std::string_view choiceName(const std::array<Choice<T>, N>& choices, T value) {
-  for (const Choice<T>& choice : choices) {
-    if (choice.value == value) return choice.name;
-  }
-  return "?";
-}
 
 // The keys each object may hold, in the order SPEC 2's example lists them.
 constexpr std::array<std::string_view, 12> kSceneKeys{"lightcts", "name",   "description", "image",
@@ -200,12 +193,10 @@ constexpr std::array<std::string_view, 2> kKeyframeKeys{"position", "target"};
 constexpr std::array<std::string_view, 4> kExpectKeys{"tolerance_scale", "max_failing_pixels", "expect_fail",
                                                      "against"};
 
-constexpr std::array<Choice<Projection>, 2> kProjections{
-    {{"perspective", Projection::Perspective}, {"orthographic", Projection::Orthographic}}};
+constexpr const auto& kProjections = kProjectionWords;
 constexpr std::array<Choice<MeshType>, 3> kMeshTypes{
     {{"plane", MeshType::Plane}, {"sphere", MeshType::Sphere}, {"box", MeshType::Box}}};
-constexpr std::array<Choice<LightType>, 3> kLightTypes{
-    {{"directional", LightType::Directional}, {"point", LightType::Point}, {"spot", LightType::Spot}}};
+constexpr const auto& kLightTypes = kLightTypeWords;
 constexpr std::array<Choice<ShadowFilter>, 3> kShadowFilters{{{"hard", ShadowFilter::Hard},
                                                               {"bilinear", ShadowFilter::Bilinear},
                                                               {"tent3x3", ShadowFilter::Tent3x3}}};
@@ -712,7 +703,7 @@ class SceneReader {
     // ignored; it is far more likely a missing "projection": "perspective".
     const bool perspective = camera.projection == Projection::Perspective;
     const OtherVariants others{kCameraKeys,
-                               "projection '" + std::string(choiceName(kProjections, camera.projection)) + "'"};
+                               "projection '" + std::string(wordOf(kProjections, camera.projection)) + "'"};
     checkKeys(node, perspective ? Keys(kPerspectiveKeys) : Keys(kOrthographicKeys), &others);
 
     if (auto fov = member(node, "fov_y_deg")) camera.fovYDeg = readNumber(*fov, {0, true, 180, true});
@@ -807,7 +798,7 @@ class SceneReader {
       object.lightmapResolution = readInt(*resolution, 0, kMaxLightmapResolution);
       if (object.lightmapResolution > 0 && object.mesh.type != MeshType::Plane) {
         fail(*resolution, "lightmaps are only supported on planes (SPEC 2); this mesh is a " +
-                              std::string(choiceName(kMeshTypes, object.mesh.type)));
+                              std::string(wordOf(kMeshTypes, object.mesh.type)));
       }
     }
     return object;
@@ -817,7 +808,7 @@ class SceneReader {
     expectObject(node);
     MeshSpec mesh;
     if (auto type = member(node, "type")) mesh.type = readChoice(*type, kMeshTypes);
-    const OtherVariants others{kMeshKeys, "mesh type '" + std::string(choiceName(kMeshTypes, mesh.type)) + "'"};
+    const OtherVariants others{kMeshKeys, "mesh type '" + std::string(wordOf(kMeshTypes, mesh.type)) + "'"};
     switch (mesh.type) {
       case MeshType::Plane:
         checkKeys(node, kPlaneKeys, &others);
@@ -936,7 +927,7 @@ class SceneReader {
     const auto node = member(lightNode, "shadow_map");
     if (node && light.mode != LightMode::Realtime) {
       fail(*node, "a shadow_map needs a realtime light (SPEC 2; a " +
-                      std::string(choiceName(kLightModes, light.mode)) +
+                      std::string(wordOf(kLightModes, light.mode)) +
                       " light's shadows are baked into the shadow mask or lightmap)");
     }
     if (light.mode != LightMode::Realtime || (!light.shadows && !node)) return;
@@ -945,7 +936,7 @@ class SceneReader {
     const bool directional = light.type == LightType::Directional;
     if (node) {
       expectObject(*node);
-      const std::string type(choiceName(kLightTypes, light.type));
+      const std::string type(wordOf(kLightTypes, light.type));
       const OtherVariants others{kShadowMapKeys, "a " + type + " light's shadow_map"};
       if (directional) checkKeys(*node, kDirectionalShadowMapKeys, &others);
       else checkKeys(*node, kLocalShadowMapKeys, &others);
@@ -996,9 +987,9 @@ class SceneReader {
     expectObject(node);
     if (light.mode != LightMode::Realtime) {
       fail(node, "a cookie needs a realtime light (SPEC 2); this light is " +
-                     std::string(choiceName(kLightModes, light.mode)));
+                     std::string(wordOf(kLightModes, light.mode)));
     }
-    const std::string type(choiceName(kLightTypes, light.type));
+    const std::string type(wordOf(kLightTypes, light.type));
     const OtherVariants others{kCookieKeys, "a " + type + " light's cookie"};
     Cookie cookie;
     switch (light.type) {

@@ -22,6 +22,9 @@ packages=(
   # the report test: every image of report/index.html loads in headless Chromium
   # (about 350 MB installed; its test is skipped where it is missing)
   chromium
+  # the plots' point labels are set in monospace, placed by its width
+  # (reports/svg_labels.h): DejaVu Sans Mono, 0.6 em a glyph
+  fonts-dejavu-core
   # the junit test: junit.xml validates against the JUnit XML schema (xmllint --schema)
   libxml2-utils
   # the evidence viewer's test reads the EXRs' floats exactly, independently

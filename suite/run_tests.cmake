@@ -124,7 +124,7 @@ add_test(NAME bench.command-quick
          COMMAND lightcts bench --quick --fresh-errors --backend vulkan --scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes
                  --out ${bench_out})
 set_tests_properties(bench.command-quick PROPERTIES LABELS "bench;vulkan" FIXTURES_SETUP bench-quick
-  SKIP_RETURN_CODE 3 TIMEOUT 300 COST 89)  # COST: started first (suite/bench/CMakeLists.txt says why)
+  SKIP_RETURN_CODE 3 TIMEOUT 300 COST 15)  # COST: started first (CMakeLists.txt says why)
 add_test(NAME bench.command-quick-plots-render-in-chromium
          COMMAND ${PROJECT_SOURCE_DIR}/reports/tests/check_svgs_render.sh ${bench_out})
 set_tests_properties(bench.command-quick-plots-render-in-chromium PROPERTIES LABELS "bench;report"

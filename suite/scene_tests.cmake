@@ -103,10 +103,10 @@ foreach(combination ${backend_combinations})
            COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DPYTHON=${SYSTEM_PYTHON3}
                    -DSCENES=${CMAKE_CURRENT_SOURCE_DIR}/scenes -DCOMBINATION=${suffix}
                    -DOUT=${CMAKE_BINARY_DIR}/test-out/scene-runs/${suffix} -P ${CMAKE_CURRENT_SOURCE_DIR}/scene_run.cmake)
-  # COST: started first (suite/bench/CMakeLists.txt says why); a hung driver
-  # is the run's Timeout (120 s a test), not a stalled CI run.
+  # COST: started first (CMakeLists.txt says why); a hung driver is the
+  # run's Timeout (120 s a test), not a stalled CI run.
   set_tests_properties(scene-runs.${suffix} PROPERTIES LABELS "scene-runs;${suffix}" FIXTURES_SETUP scene-run-${suffix}
-    ENVIRONMENT "${backend_test_environment}" TIMEOUT 1500 COST 300)
+    ENVIRONMENT "${backend_test_environment}" TIMEOUT 1500 COST 60)
 endforeach()
 
 # Mutants (SPEC 7): suite/mutant_tests.cmake. `lightcts run` itself:
