@@ -1,10 +1,10 @@
 #include "app/commands.h"
-#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "baking/bake.h"
 #include "baking/overlap_map.h"
 #include "imaging/atomic_file.h"
+#include "imaging/image_codec_loader.h"
 #include "imaging/image_files.h"
 #include "scene_input/scene_loader.h"
 

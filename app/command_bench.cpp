@@ -1,10 +1,10 @@
 // `lightcts bench` and `lightcts bench compare`, and the hidden
 // `lightcts bench-worker` that `bench` starts once per backend combination.
 #include "app/commands.h"
-#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "imaging/atomic_file.h"
+#include "imaging/image_codec_loader.h"
 #include "reports/bench_compare.h"
 #include "runner/bench_run.h"
 

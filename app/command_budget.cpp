@@ -2,9 +2,9 @@
 // and numbers (reference/light_budget.h computes them; budget_maps.h draws
 // them). docs/cli.md describes the files.
 #include "app/commands.h"
-#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
+#include "imaging/image_codec_loader.h"
 #include "imaging/image_files.h"
 #include "reference/light_budget.h"
 #include "runner/budget_files.h"

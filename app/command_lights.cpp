@@ -1,9 +1,9 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
+#include "lighting/selection_json.h"
 #include "scene_input/gltf_import.h"
 #include "scene_input/gltf_scene_json.h"
-#include "lighting/selection_json.h"
 
 #include <filesystem>
 #include <ostream>

@@ -1,9 +1,9 @@
 #include "app/commands.h"
-#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "conformance/reference_cache.h"
 #include "conformance/scene_check.h"
+#include "imaging/image_codec_loader.h"
 #include "imaging/image_files.h"
 #include "reference/reference_renderer.h"
 

@@ -1,7 +1,6 @@
 // `lightcts render` and `lightcts compare` (SPEC 8).
 #include "app/backend_choice.h"
 #include "app/commands.h"
-#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "backends/expected_driver.h"
@@ -9,6 +8,7 @@
 #include "conformance/cpu_mutants.h"
 #include "conformance/reference_cache.h"
 #include "conformance/scene_check.h"
+#include "imaging/image_codec_loader.h"
 #include "imaging/image_files.h"
 #include "reference/reference_renderer.h"
 

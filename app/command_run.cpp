@@ -1,10 +1,10 @@
 // `lightcts run` (SPEC 8), the hidden `lightcts worker` it starts, and
 // `lightcts merge` of its shards (docs/ci.md).
 #include "app/commands.h"
-#include "imaging/image_codec_loader.h"
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "conformance/reference_cache.h"
+#include "imaging/image_codec_loader.h"
 #include "runner/suite_worker.h"
 
 #include <filesystem>

@@ -1,10 +1,10 @@
 #include "runner/run_budgets.h"
 
 #include "baking/bake.h"
-#include "scene_input/scene_loader.h"
 #include "reference/light_budget.h"
 #include "reports/budget_maps.h"
 #include "runner/budget_files.h"
+#include "scene_input/scene_loader.h"
 
 #include <optional>
 

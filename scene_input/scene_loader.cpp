@@ -6,12 +6,12 @@
 #include "imaging/image_files.h"
 
 #include "lighting/default_rig.h"
-#include "scene_input/gltf_import.h"
-#include "scene_input/json_describe.h"
-#include "scene_input/json_locations.h"
 #include "lighting/scene_words.h"
 #include "lighting/transform.h"
 #include "lighting/visible_lights.h"
+#include "scene_input/gltf_import.h"
+#include "scene_input/json_describe.h"
+#include "scene_input/json_locations.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>

@@ -2,13 +2,13 @@
 // maps' pixels against the counts (each count's bin colour, the scale fixed
 // by SPEC: 0, 1, 2, 4, 8, 16, 32, 64+), the JSON's per-light reasons, every
 // frame of an animated scene, and bad input.
-#include "reports/budget_maps.h"
-#include "imaging/image_files.h"
 #include "app/commands.h"
 #include "app/exit_status.h"
+#include "imaging/image_files.h"
 #include "lighting/frame.h"
-#include "scene_input/scene_loader.h"
 #include "reference/light_budget.h"
+#include "reports/budget_maps.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

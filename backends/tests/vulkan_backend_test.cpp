@@ -7,8 +7,8 @@
 #include "backends/vulkan/vulkan_device.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "scene_input/scene_loader.h"
 #include "reference/reference_renderer.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 // The table is docs/model.md's "Which scene tests each term".
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "scene_input/scene_loader.h"
 #include "reference/reference_renderer.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

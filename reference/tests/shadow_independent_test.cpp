@@ -41,11 +41,11 @@
 // a filter weight, both well above 1e-3 here except for the smallest tent
 // weights. The counts of exactly zero spans are printed beside the others.
 #include "lighting/frame.h"
-#include "scene_input/scene_loader.h"
 #include "lighting/shadow_projection.h"
 #include "reference/bvh.h"
 #include "reference/shadow_maps.h"
 #include "reference/world_triangles.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

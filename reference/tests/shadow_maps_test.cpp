@@ -4,11 +4,11 @@
 // cases (a receiver compared against its own depth, a texel at a box's
 // silhouette, a lookup on a texel boundary).
 #include "lighting/frame.h"
-#include "scene_input/scene_loader.h"
 #include "reference/bvh.h"
 #include "reference/reference_renderer.h"
 #include "reference/shadow_maps.h"
 #include "reference/world_triangles.h"
+#include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The glTF import (SPEC 2.1) against values derived by hand from the
 // generated models (suite/gltf/generate_models.py states each derivation),
 // and its refusals of bad files (exit 2 through SceneLoadError).
+#include "lighting/mesh.h"
 #include "scene_input/gltf_import.h"
 #include "scene_input/imported_mesh.h"
-#include "lighting/mesh.h"
 #include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>

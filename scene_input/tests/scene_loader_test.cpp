@@ -1,8 +1,8 @@
 // Tests of the scene loader (SPEC 2) and of the JSON positions it reports.
 // Every expected line and column is counted by hand in the literal next to it.
+#include "lighting/scene_words.h"
 #include "scene_input/json_locations.h"
 #include "scene_input/scene_loader.h"
-#include "lighting/scene_words.h"
 
 #include <gtest/gtest.h>
 

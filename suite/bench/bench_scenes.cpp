@@ -1,7 +1,7 @@
 #include "suite/bench/bench_scenes.h"
 
-#include "scene_input/scene_loader.h"
 #include "lighting/scene_words.h"
+#include "scene_input/scene_loader.h"
 
 #include <glm/geometric.hpp>
 

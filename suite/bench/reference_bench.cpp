@@ -4,8 +4,8 @@
 // pixels and pixel-light evaluations per second, tolerance shading included.
 #include "baking/bake.h"
 #include "lighting/frame.h"
-#include "scene_input/scene_loader.h"
 #include "reference/reference_renderer.h"
+#include "scene_input/scene_loader.h"
 
 #include <benchmark/benchmark.h>
 
