@@ -69,6 +69,8 @@ int runWorkerCommand(const std::string& planFile, int start, std::ostream& out, 
       plan = runner::planFromJson(nlohmann::json::parse(in));
     } catch (const nlohmann::json::exception& e) {
       throw InputError("worker plan " + planFile + ": " + e.what());
+    } catch (const std::invalid_argument& e) {
+      throw InputError("worker plan " + planFile + ": " + e.what());
     }
     return runner::runWorker(plan, start, out);
   });

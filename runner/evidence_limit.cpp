@@ -6,18 +6,17 @@
 
 namespace runner {
 
-long long limitEvidenceImages(nlohmann::ordered_json& tests, const std::filesystem::path& outDir, int limit) {
+long long limitEvidenceImages(std::vector<results::TestRecord>& tests, const std::filesystem::path& outDir, int limit) {
   namespace fs = std::filesystem;
-  std::vector<nlohmann::ordered_json*> failures, others;
-  for (auto& test : tests) {
-    if (!test.contains("evidence") || !test["evidence"].is_object()) continue;
-    const auto verdict = comparison::parseVerdict(test.value("verdict", ""));
-    (verdict && comparison::isRunFailure(*verdict) ? failures : others).push_back(&test);
+  std::vector<results::TestRecord*> failures, others;
+  for (results::TestRecord& test : tests) {
+    if (!test.evidence.is_object()) continue;
+    (comparison::isRunFailure(test.verdict) ? failures : others).push_back(&test);
   }
   failures.insert(failures.end(), others.begin(), others.end());
   long long dropped = 0;
   for (std::size_t i = std::size_t(limit); i < failures.size(); ++i) {
-    nlohmann::ordered_json& evidence = (*failures[i])["evidence"];
+    nlohmann::ordered_json& evidence = failures[i]->evidence;
     const std::string summary = evidence.value("summary_json", "");
     const fs::path folder = (outDir / summary).lexically_normal().parent_path();
     // Only ever a test's own folder, evidence/<test>/, whatever the record says.

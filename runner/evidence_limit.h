@@ -5,19 +5,19 @@
 // worst pixels with their values and allowed bounds).
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "results/run_records.h"
 
 #include <filesystem>
 
 namespace runner {
 
-// Over results.json's "tests" records, in order: the run failures first
-// (comparison::isRunFailure of "verdict"), then the other tests with
+// Over a run's test records, in order: the run failures first
+// (comparison::isRunFailure of the verdict), then the other tests with
 // evidence (expected failures, detected expect_fail mismatches). Past the
 // first `limit`, removes every file of the test's evidence folder but
 // summary.json and rewrites its "evidence" to {"frame", "summary_json",
 // "images_kept": false}. Returns how many lost their images. The mutation
 // check's evidence (one folder per mutant and combination) is not counted.
-long long limitEvidenceImages(nlohmann::ordered_json& tests, const std::filesystem::path& outDir, int limit);
+long long limitEvidenceImages(std::vector<results::TestRecord>& tests, const std::filesystem::path& outDir, int limit);
 
 }  // namespace runner

@@ -33,14 +33,12 @@ std::string verdictLine(Verdict verdict, const std::string& test, const std::str
   return text.str();
 }
 
-}  // namespace
-
-Json abnormalResult(const WorkerTask& task, Verdict verdict, const std::string& message) {
-  return {{"test", task.test},       {"raw_verdict", comparison::verdictName(verdict)},
-          {"message", message},      {"metrics", nullptr},
-          {"frames", Json::array()}, {"popping_score", nullptr},
-          {"timings_ms", nullptr},   {"evidence", nullptr}};
+// The record of a task that never got a worker's result.
+results::TaskResult abnormalResult(const WorkerTask& task, Verdict verdict, const std::string& message) {
+  return results::TaskResult::abnormal(task.test, verdict, message);
 }
+
+}  // namespace
 
 PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable, std::chrono::milliseconds timeout,
                     const fs::path& logsDir, const std::string& fileStem, const PartCallbacks& callbacks) {
@@ -51,7 +49,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
   const fs::path logFile = logsDir / (fileStem + ".log");
   fs::remove(logFile);  // the workers append; an earlier run's lines are not this run's
 
-  auto record = [&](const WorkerTask& task, Json result) {
+  auto record = [&](const WorkerTask& task, results::TaskResult result) {
     if (callbacks.taskDone) callbacks.taskDone(task, result);
     outcome.results.push_back(std::move(result));
   };
@@ -116,7 +114,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         outcome.device = event["device"];
         backendUp = true;
         if (callbacks.backendUp) callbacks.backendUp();
-      } else if (kind == "backend_error" && next < plan.tasks.size() && plan.tasks[next].mutant != "none") {
+      } else if (kind == "backend_error" && next < plan.tasks.size() && !plan.tasks[next].isModelTest()) {
         // A mutant's backend that could not be built (its shaders, its
         // pipelines; the model's ran in the combination's first part): the
         // combination is in error and that mutant's tasks crashed; a fresh
@@ -124,10 +122,11 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         // stay its own.
         outcome.status = BackendStatus::Error;
         outcome.message = event.value("message", "");
-        const std::string failed = plan.tasks[next].mutant;
+        const shaders::Mutant failed = plan.tasks[next].mutant;
         for (; next < plan.tasks.size() && plan.tasks[next].mutant == failed; ++next)
           record(plan.tasks[next], abnormalResult(plan.tasks[next], Verdict::Crash,
-                                                  "mutant " + failed + ": backend error: " + outcome.message));
+                                                  "mutant " + std::string(shaders::mutantName(failed)) +
+                                                      ": backend error: " + outcome.message));
         break;
       } else if (kind == "backend_unavailable" || kind == "backend_error") {
         // A backend that ran before and is gone now is an error, not a skip.
@@ -140,9 +139,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         stop = true;
         break;
       } else if (kind == "result" && event.value("index", -1) == int(next)) {
-        event.erase("kind");
-        event.erase("index");
-        record(plan.tasks[next], std::move(event));
+        record(plan.tasks[next], results::TaskResult::fromJson(event));
         ++next;
         gotResult = true;
       }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "comparison/run_status.h"
+#include "results/run_records.h"
 #include "runner/worker_plan.h"
 
 #include <nlohmann/json.hpp>
@@ -22,12 +23,12 @@ struct PartOutcome {
   comparison::BackendStatus status = comparison::BackendStatus::Ran;
   std::string message;
   nlohmann::ordered_json device = nullptr;    // what the worker said of its device, or null
-  std::vector<nlohmann::ordered_json> results;  // one per task, in plan order
+  std::vector<results::TaskResult> results;  // one per task, in plan order
   double wallSeconds = 0;
 };
 
 struct PartCallbacks {
-  std::function<void(const WorkerTask&, const nlohmann::ordered_json& result)> taskDone;
+  std::function<void(const WorkerTask&, const results::TaskResult& result)> taskDone;
   std::function<void(const std::string& line)> note;  // a Crash or Timeout, for the console
   std::function<void()> backendUp;  // the first worker's backend came up (runner/part_scheduler.h)
 };
@@ -36,8 +37,5 @@ struct PartCallbacks {
 // logsDir/<fileStem>.log (replaced: an earlier run's lines are not this run's).
 PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable, std::chrono::milliseconds timeout,
                     const std::filesystem::path& logsDir, const std::string& fileStem, const PartCallbacks& callbacks);
-
-// The record of a task that never got a worker's result.
-nlohmann::ordered_json abnormalResult(const WorkerTask& task, comparison::Verdict verdict, const std::string& message);
 
 }  // namespace runner

@@ -62,7 +62,7 @@ std::vector<double> unitCosts(const std::vector<RunUnit>& units, const std::opti
   auto costOf = [](const RunUnit& unit, const TestTiming& t) {
     double cost = 0;
     for (const WorkerTask& task : unit.tasks)
-      cost += task.mutant == "none" ? t.totalMs : std::max(t.totalMs - t.referenceMs, 0.0);
+      cost += task.isModelTest() ? t.totalMs : std::max(t.totalMs - t.referenceMs, 0.0);
     return cost;
   };
   double knownSum = 0;
@@ -106,12 +106,12 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
   std::vector<WorkerPart> parts;
   for (std::size_t c = 0; c < combinations; ++c) {
     std::vector<WorkerTask> model;
-    std::vector<std::string> mutantOrder;
-    std::map<std::string, std::vector<WorkerTask>> byMutant;
+    std::vector<shaders::Mutant> mutantOrder;
+    std::map<shaders::Mutant, std::vector<WorkerTask>> byMutant;
     for (const RunUnit& unit : units) {
       if (unit.combination != c) continue;
       for (const WorkerTask& task : unit.tasks) {
-        if (task.mutant == "none") {
+        if (task.isModelTest()) {
           model.push_back(task);
           continue;
         }
@@ -129,7 +129,7 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
     // tasks: checked against its killers a mutant has a few tasks, and a
     // worker per mutant would spend more on starting its backend than on them.
     std::vector<WorkerTask> packed;
-    for (const std::string& mutant : mutantOrder) {
+    for (const shaders::Mutant mutant : mutantOrder) {
       std::vector<WorkerTask>& block = byMutant[mutant];
       if (!packed.empty() && packed.size() + block.size() > kModelTestsPerPart)
         parts.push_back({c, number++, std::exchange(packed, {})});

@@ -6,7 +6,6 @@
 #include "reports/html_report.h"
 #include "reports/junit_writer.h"
 
-#include <algorithm>
 #include <fstream>
 #include <iterator>
 
@@ -14,40 +13,6 @@ namespace runner {
 
 using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
-
-Json countsJson(const std::map<comparison::Verdict, int>& counted) {
-  Json counts = Json::object();
-  for (const comparison::Verdict verdict : comparison::kAllVerdicts) {
-    const auto it = counted.find(verdict);
-    const int n = it == counted.end() ? 0 : it->second;
-    if (n > 0 || comparison::listedWhenZero(verdict)) counts[std::string(comparison::verdictName(verdict))] = n;
-  }
-  return counts;
-}
-
-Json mutantCountsJson(const std::vector<const Json*>& mutantRecords) {
-  Json counts = {{"killed", 0}, {"survived", 0}, {"other", 0}};
-  for (const Json* record : mutantRecords) {
-    const auto status = comparison::parseMutantStatus(record->value("status", ""));
-    const bool ownBucket =
-        status == comparison::MutantStatus::Killed || status == comparison::MutantStatus::Survived;
-    const std::string bucket = ownBucket ? std::string(comparison::mutantStatusName(*status)) : "other";
-    counts[bucket] = counts[bucket].get<int>() + 1;
-  }
-  return counts;
-}
-
-Json slowestTests(const Json& tests) {
-  std::vector<std::pair<double, std::string>> times;
-  for (const Json& t : tests)
-    if (t.contains("timings_ms") && t["timings_ms"].is_object())
-      times.emplace_back(t["timings_ms"]["total"].get<double>(), t["name"].get<std::string>());
-  std::sort(times.begin(), times.end(), std::greater<>());
-  if (times.size() > 10) times.resize(10);
-  Json slowest = Json::array();
-  for (const auto& [ms, name] : times) slowest.push_back({{"name", name}, {"total_ms", ms}});
-  return slowest;
-}
 
 std::string scenesDigest(const std::vector<fs::path>& sceneFiles, const fs::path& root) {
   std::string all;

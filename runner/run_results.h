@@ -1,26 +1,15 @@
-// The parts of results.json (docs/results-format.md) that `lightcts run` and
-// `lightcts merge` both build, so a merged run reads exactly like one run.
+// What `lightcts run` and `lightcts merge` both do around results.json
+// (results/run_records.h): the scene set's digest, clearing a folder of an
+// earlier run's files, and writing the run's files.
 #pragma once
-
-#include "comparison/run_status.h"
-#include "comparison/verdict.h"
 
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace runner {
-
-// A backend's "counts", in report order (zeros only where listedWhenZero).
-nlohmann::ordered_json countsJson(const std::map<comparison::Verdict, int>& counted);
-// A backend's "mutant_counts" from its mutant records: killed, survived, and
-// "other" for the statuses that prove nothing.
-nlohmann::ordered_json mutantCountsJson(const std::vector<const nlohmann::ordered_json*>& mutantRecords);
-// The ten slowest tests by timings_ms.total, for results.json's "slowest".
-nlohmann::ordered_json slowestTests(const nlohmann::ordered_json& tests);
 
 // A digest of a scene folder's files (their relative paths and bytes, in
 // catalogue order): two runs with the same digest ran the same scenes.

@@ -5,6 +5,7 @@
 #include "comparison/comparison_report.h"
 #include "comparison/verdict.h"
 #include "conformance/scene_check.h"
+#include "results/run_records.h"
 #include "scene_input/scene_loader.h"
 
 #include <csignal>
@@ -124,29 +125,37 @@ class Worker {
       const WorkerTask& task = plan_.tasks[std::size_t(i)];
       if (int status = ensureBackend(task.mutant); status != 0) return status;
       testHooks(task.test);
-      Json result = {{"kind", "result"}, {"index", i}, {"test", task.test}};
+      results::TaskResult result;
+      result.test = task.test;
       try {
         runTask(task, result);
       } catch (const backends::NotSupportedError& e) {
-        result["raw_verdict"] = comparison::verdictName(comparison::Verdict::NotSupported);
-        result["message"] = e.what();
+        result.rawVerdict = comparison::Verdict::NotSupported;
+        result.message = e.what();
       } catch (const backends::DriverError& e) {
-        result["raw_verdict"] = comparison::verdictName(comparison::Verdict::Crash);
-        result["message"] = std::string("driver error: ") + e.what();
-        emit(out_, result);
+        result.rawVerdict = comparison::Verdict::Crash;
+        result.message = std::string("driver error: ") + e.what();
+        emitResult(i, result);
         return 4;
       } catch (const std::exception& e) {
-        result["raw_verdict"] = comparison::verdictName(comparison::Verdict::Crash);
-        result["message"] = std::string("internal error: ") + e.what();
+        result.rawVerdict = comparison::Verdict::Crash;
+        result.message = std::string("internal error: ") + e.what();
       }
-      emit(out_, result);
+      emitResult(i, result);
     }
     return 0;
   }
 
  private:
+  // The protocol's "result" line: the task's index in the plan and its result.
+  void emitResult(int index, const results::TaskResult& result) {
+    Json line = {{"kind", "result"}, {"index", index}};
+    line.update(result.toJson());
+    emit(out_, line);
+  }
+
   // One backend at a time, built for the task's shader variant.
-  int ensureBackend(const std::string& mutant) {
+  int ensureBackend(shaders::Mutant mutant) {
     if (backend_ && mutant == backendMutant_) return 0;
     backend_.reset();
     const backends::BackendEntry* entry = backends::findBuiltBackendEntry(plan_.combination.backend);
@@ -159,13 +168,12 @@ class Worker {
       const bool deviceDecides = !plan_.device.empty() && plan_.combination.driver == "llvmpipe";
       options.driver = deviceDecides ? "" : plan_.combination.driver;
       options.validation = backends::validationRequestedByDefault();
-      const auto variant = shaders::mutantFromName(mutant);
-      if (!variant) throw std::invalid_argument("unknown mutant '" + mutant + "'");
       // Test hook: this mutant's backend fails to build, as a driver that
       // cannot compile one shader variant would (runner/part_run.cpp).
-      if (const char* broken = std::getenv("LIGHTCTS_TEST_BACKEND_ERROR_FOR_MUTANT"); broken && mutant == broken)
-        throw std::runtime_error("test hook: mutant " + mutant + "'s backend does not build");
-      options.variant.mutant = *variant;
+      const std::string name(shaders::mutantName(mutant));
+      if (const char* broken = std::getenv("LIGHTCTS_TEST_BACKEND_ERROR_FOR_MUTANT"); broken && name == broken)
+        throw std::runtime_error("test hook: mutant " + name + "'s backend does not build");
+      options.variant.mutant = mutant;
       backend_ = entry->create(options);
       const backends::DeviceInfo device = backend_->device();
       backends::requireExpectedDriver(device, plan_.expectDriver);
@@ -193,24 +201,24 @@ class Worker {
     return *it->second;
   }
 
-  void runTask(const WorkerTask& task, Json& result) {
+  void runTask(const WorkerTask& task, results::TaskResult& result) {
     conformance::SceneReferences& references = referencesOf(task.scene);
     conformance::CheckOptions options;
-    options.mutant = *shaders::mutantFromName(task.mutant);  // checked by ensureBackend
+    options.mutant = task.mutant;
     const conformance::SceneCheck check = conformance::checkScene(references, *backend_, options);
-    result["raw_verdict"] = comparison::verdictName(check.verdict);
-    result["message"] = check.qualityWarning;  // why a QualityWarning checks nothing; "" otherwise
-    result["metrics"] = metricsJson(check);
-    result["frames"] = framesJson(check);
-    result["popping_score"] = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
+    result.rawVerdict = check.verdict;
+    result.message = check.qualityWarning;  // why a QualityWarning checks nothing; "" otherwise
+    result.metrics = metricsJson(check);
+    result.frames = framesJson(check);
+    result.poppingScore = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
     const conformance::StageTimings& t = check.timings;
-    result["timings_ms"] = {{"reference", t.reference}, {"pipeline", t.pipeline}, {"draw", t.draw},
-                            {"readback", t.readback},   {"compare", t.compare},   {"total", t.total}};
-    result["evidence"] = nullptr;
+    result.timingsMs = {{"reference", t.reference}, {"pipeline", t.pipeline}, {"draw", t.draw},
+                        {"readback", t.readback},   {"compare", t.compare},   {"total", t.total}};
+    result.evidence = nullptr;
     // Every failing test leaves evidence; a mutant leaves it for its first
     // kill; an expect_fail scene whose known mismatch was detected leaves it
     // too, so the report shows how far off that mismatch is.
-    const bool isMutant = task.mutant != "none";
+    const bool isMutant = !task.isModelTest();
     const bool detectedMismatch = !isMutant && references.prepared()->scene.expect.expectFail;
     if (check.verdict != comparison::Verdict::Fail && !detectedMismatch) return;
     if (isMutant && !evidencedMutants_.insert(task.mutant).second) return;
@@ -218,16 +226,16 @@ class Worker {
         isMutant ? mutantEvidenceDir(task.mutant, plan_.combination.suffix) : testEvidenceDir(task.test);
     comparison::writeEvidence((fs::path(plan_.outDir) / dir).string(), check.evidence().comparison,
                               check.evidenceResult, check.evidenceReference, task.test, &check.evidenceShadowMaps);
-    result["evidence"] = evidenceJson(dir, check.evidenceFrame);
+    result.evidence = evidenceJson(dir, check.evidenceFrame);
   }
 
   const WorkerPlan& plan_;
   std::ostream& out_;
   std::unique_ptr<backends::Backend> backend_;
-  std::string backendMutant_;
+  shaders::Mutant backendMutant_ = shaders::Mutant::None;
   bool announced_ = false;
   std::map<std::string, std::unique_ptr<conformance::SceneReferences>> references_;
-  std::set<std::string> evidencedMutants_;
+  std::set<shaders::Mutant> evidencedMutants_;
 };
 
 }  // namespace

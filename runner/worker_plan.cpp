@@ -1,10 +1,13 @@
 #include "runner/worker_plan.h"
 
+#include <optional>
+#include <stdexcept>
+
 namespace runner {
 
 nlohmann::json planToJson(const WorkerPlan& plan) {
   nlohmann::json tasks = nlohmann::json::array();
-  for (const WorkerTask& t : plan.tasks) tasks.push_back({{"test", t.test}, {"scene", t.scene}, {"mutant", t.mutant}});
+  for (const WorkerTask& t : plan.tasks) tasks.push_back({{"test", t.test}, {"scene", t.scene}, {"mutant", shaders::mutantName(t.mutant)}});
   return {{"suffix", plan.combination.suffix},
           {"backend", plan.combination.backend},
           {"driver", plan.combination.driver},
@@ -23,16 +26,19 @@ WorkerPlan planFromJson(const nlohmann::json& json) {
   plan.expectDriver = json.at("expect_driver").get<std::string>();
   plan.outDir = json.at("out_dir").get<std::string>();
   plan.referenceCache = json.value("reference_cache", "");
-  for (const auto& t : json.at("tasks"))
-    plan.tasks.push_back({t.at("test").get<std::string>(), t.at("scene").get<std::string>(),
-                          t.at("mutant").get<std::string>()});
+  for (const auto& t : json.at("tasks")) {
+    const std::string mutant = t.at("mutant").get<std::string>();
+    const std::optional<shaders::Mutant> known = shaders::mutantFromName(mutant);
+    if (!known) throw std::invalid_argument("unknown mutant '" + mutant + "'");
+    plan.tasks.push_back({t.at("test").get<std::string>(), t.at("scene").get<std::string>(), *known});
+  }
   return plan;
 }
 
 std::string testEvidenceDir(const std::string& test) { return "evidence/" + test; }
 
-std::string mutantEvidenceDir(const std::string& mutant, const std::string& suffix) {
-  return "mutants/" + mutant + "." + suffix;
+std::string mutantEvidenceDir(shaders::Mutant mutant, const std::string& suffix) {
+  return "mutants/" + std::string(shaders::mutantName(mutant)) + "." + suffix;
 }
 
 }  // namespace runner

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "runner/backend_combination.h"
+#include "shaders/shader_variant.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +17,9 @@ namespace runner {
 struct WorkerTask {
   std::string test;   // <group>.<name>.<suffix>
   std::string scene;  // scene file path
-  std::string mutant = "none";
+  shaders::Mutant mutant = shaders::Mutant::None;  // None: the model's own test
+
+  bool isModelTest() const { return mutant == shaders::Mutant::None; }
 };
 
 struct WorkerPlan {
@@ -31,10 +34,12 @@ struct WorkerPlan {
 };
 
 nlohmann::json planToJson(const WorkerPlan& plan);
-WorkerPlan planFromJson(const nlohmann::json& json);  // throws nlohmann::json::exception
+// Throws nlohmann::json::exception, or std::invalid_argument for a mutant no
+// build of lightcts knows.
+WorkerPlan planFromJson(const nlohmann::json& json);
 
 // The evidence folders, relative to the run's --out folder.
 std::string testEvidenceDir(const std::string& test);                           // evidence/<test>
-std::string mutantEvidenceDir(const std::string& mutant, const std::string& suffix);  // mutants/<mutant>.<suffix>
+std::string mutantEvidenceDir(shaders::Mutant mutant, const std::string& suffix);  // mutants/<mutant>.<suffix>
 
 }  // namespace runner

@@ -6,7 +6,11 @@ but the timings), the mutant records, the backends' statuses and counts,
 junit.xml's testcases, failures.csv and results.csv, and the evidence files
 byte for byte. Exit 0 when they agree, 1 with the differences listed.
 
-Usage: check_same_results.py RUN_A RUN_B"""
+With --every-key, results.json must be equal key for key at every level,
+apart from what says when, how long and from which shards (TIMES_AND_PROVENANCE):
+what `merge` of a run's single shard must give against the unsharded run.
+
+Usage: check_same_results.py [--every-key] RUN_A RUN_B"""
 import csv
 import filecmp
 import json
@@ -25,6 +29,41 @@ def without_timings(value):
     if isinstance(value, list):
         return [without_timings(v) for v in value]
     return value
+
+
+# What may differ between an unsharded run and the merge of its one shard:
+# when and how long (the summed task times included), the command line, and
+# the merge's own record of its shards.
+TIMES_AND_PROVENANCE = {"timings_ms", "wall_s", "duration_s", "started_utc", "command", "merged_from",
+                        "slowest"}
+TIMED = {"task_ms": ("reference", "total")}  # keys whose times differ while their counts must not
+
+
+def key_differences(a, b, path=""):
+    """Every path where two JSON values differ, outside TIMES_AND_PROVENANCE."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        if list(a) != list(b):
+            return [f"{path or '/'}: keys {list(a)} against {list(b)}"]
+        times = TIMED.get(path.rsplit("/", 1)[-1], ())
+        return [d for k in a if k not in TIMES_AND_PROVENANCE and k not in times
+                for d in key_differences(a[k], b[k], f"{path}/{k}")]
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [f"{path}: {len(a)} items against {len(b)}"]
+        return [d for i, (x, y) in enumerate(zip(a, b)) for d in key_differences(x, y, f"{path}/{i}")]
+    return [] if a == b else [f"{path}: {json.dumps(a)[:80]} against {json.dumps(b)[:80]}"]
+
+
+def every_key(a, b):
+    ra = json.load(open(os.path.join(a, "results.json")))
+    rb = json.load(open(os.path.join(b, "results.json")))
+    # The merge names its shards; the run it stands for has none.
+    rb = {k: v for k, v in rb.items() if k != "merged_from"}
+    problems = key_differences(ra, rb)
+    for p in problems[:40]:
+        print(p)
+    print(f"results.json key for key: " + ("the same" if not problems else f"{len(problems)} difference(s)"))
+    return 1 if problems else 0
 
 
 def junit_cases(path):
@@ -96,6 +135,8 @@ def main(a, b):
 
 
 if __name__ == "__main__":
+    if len(sys.argv) == 4 and sys.argv[1] == "--every-key":
+        sys.exit(every_key(sys.argv[2], sys.argv[3]))
     if len(sys.argv) != 3:
         print(__doc__)
         sys.exit(2)

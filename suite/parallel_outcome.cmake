@@ -5,7 +5,8 @@
 #                timings (suite/check_same_results.py).
 #   MODE=shards: the same tests as one run, as 3 shards merged, and as 3
 #                shards balanced by the first run's --timings merged, are the
-#                same test for test; merging shards of different revisions,
+#                same test for test; one shard of one, merged, is the run
+#                itself key for key (times aside); merging shards of different revisions,
 #                drivers or scene sets, with one missing or one twice exits 2
 #                and writes nothing.
 #   cmake -DLIGHTCTS=exe -DPYTHON=python3 -DCHECK=check_same_results.py -DOUT=dir -DMODE=jobs|shards
@@ -34,11 +35,11 @@ function(lightcts wanted)
   set(said "${out}${err}" PARENT_SCOPE)
 endfunction()
 
-function(same_results a b)
-  execute_process(COMMAND ${PYTHON} ${CHECK} ${a} ${b} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message("${a} against ${b}: ${out}${err}")
+function(same_results)
+  execute_process(COMMAND ${PYTHON} ${CHECK} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${ARGN}: ${out}${err}")
   if(NOT status EQUAL 0)
-    message(FATAL_ERROR "${a} and ${b} do not say the same")
+    message(FATAL_ERROR "${ARGN}: they do not say the same")
   endif()
 endfunction()
 
@@ -84,6 +85,11 @@ lightcts(0 merge ${shards} --out ${OUT}/merged)
 same_results(${OUT}/whole ${OUT}/merged)
 lightcts(0 merge ${balanced} --out ${OUT}/merged-balanced)
 same_results(${OUT}/whole ${OUT}/merged-balanced)
+# One shard of one, merged: results.json is the whole run's key for key,
+# times and the merge's provenance aside (check_same_results.py --every-key).
+lightcts(0 run ${ARGS} --shard 1/1 --out ${OUT}/only-shard)
+lightcts(0 merge ${OUT}/only-shard --out ${OUT}/merged-only-shard)
+same_results(--every-key ${OUT}/whole ${OUT}/merged-only-shard)
 
 # Shard 2 as if from another revision (its results.json edited).
 file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-revision)

@@ -39,36 +39,42 @@ class EvidenceLimit : public ::testing::Test {
   fs::path out_;
 };
 
+std::vector<results::TestRecord> records(const Json& tests) {
+  std::vector<results::TestRecord> typed;
+  for (const Json& t : tests) typed.push_back(results::TestRecord::fromJson(t));
+  return typed;
+}
+
 TEST_F(EvidenceLimit, RunFailuresFirstThenTheRestLoseTheirImagesButKeepTheirNumbers) {
   // In test order: an expected failure, two failures, a pass without evidence.
-  Json tests = Json::array({record("a.expected.vulkan", "ExpectedFail"), record("b.fail.vulkan", "Fail"),
+  std::vector<results::TestRecord> tests = records(Json::array({record("a.expected.vulkan", "ExpectedFail"), record("b.fail.vulkan", "Fail"),
                             record("c.crash.vulkan", "Fail"), {{"name", "d.pass.vulkan"}, {"verdict", "Pass"},
-                                                               {"evidence", nullptr}}});
+                                                               {"evidence", nullptr}}}));
   EXPECT_EQ(limitEvidenceImages(tests, out_, 1), 2);
   // The first run failure keeps everything.
   EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
-  EXPECT_EQ(tests[1]["evidence"]["viewer"], "evidence/b.fail.vulkan/viewer.html");
+  EXPECT_EQ(tests[1].evidence["viewer"], "evidence/b.fail.vulkan/viewer.html");
   // The second failure and the expected failure keep summary.json alone.
   for (const std::string name : {"c.crash.vulkan", "a.expected.vulkan"}) {
     EXPECT_FALSE(fs::exists(out_ / "evidence" / name / "result.exr")) << name;
     EXPECT_FALSE(fs::exists(out_ / "evidence" / name / "viewer-data.js")) << name;
     EXPECT_TRUE(fs::exists(out_ / "evidence" / name / "summary.json")) << name;
   }
-  EXPECT_EQ(tests[2]["evidence"], (Json{{"frame", 2}, {"summary_json", "evidence/c.crash.vulkan/summary.json"},
+  EXPECT_EQ(tests[2].evidence, (Json{{"frame", 2}, {"summary_json", "evidence/c.crash.vulkan/summary.json"},
                                         {"images_kept", false}}));
-  EXPECT_EQ(tests[0]["evidence"]["images_kept"], false);
-  EXPECT_TRUE(tests[3]["evidence"].is_null());
+  EXPECT_EQ(tests[0].evidence["images_kept"], false);
+  EXPECT_TRUE(tests[3].evidence.is_null());
 }
 
 TEST_F(EvidenceLimit, ALimitAboveTheFailuresKeepsEverything) {
-  Json tests = Json::array({record("b.fail.vulkan", "Fail")});
+  std::vector<results::TestRecord> tests = records(Json::array({record("b.fail.vulkan", "Fail")}));
   EXPECT_EQ(limitEvidenceImages(tests, out_, 50), 0);
   EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
 }
 
 TEST_F(EvidenceLimit, ASummaryPathOutsideTheEvidenceFolderRemovesNothing) {
-  Json tests = Json::array({record("b.fail.vulkan", "Fail")});
-  tests[0]["evidence"]["summary_json"] = "evidence/../summary.json";  // would name the run folder itself
+  std::vector<results::TestRecord> tests = records(Json::array({record("b.fail.vulkan", "Fail")}));
+  tests[0].evidence["summary_json"] = "evidence/../summary.json";  // would name the run folder itself
   std::ofstream(out_ / "results.json") << "{}";
   EXPECT_EQ(limitEvidenceImages(tests, out_, 0), 1);
   EXPECT_TRUE(fs::exists(out_ / "results.json"));
@@ -76,8 +82,8 @@ TEST_F(EvidenceLimit, ASummaryPathOutsideTheEvidenceFolderRemovesNothing) {
 }
 
 TEST_F(EvidenceLimit, EvidenceWithoutASummaryRemovesNothingOutsideItsFolder) {
-  Json tests = Json::array({record("b.fail.vulkan", "Fail"),
-                            {{"name", "e.odd.vulkan"}, {"verdict", "Fail"}, {"evidence", {{"frame", 0}}}}});
+  std::vector<results::TestRecord> tests = records(Json::array({record("b.fail.vulkan", "Fail"),
+                            {{"name", "e.odd.vulkan"}, {"verdict", "Fail"}, {"evidence", {{"frame", 0}}}}}));
   std::ofstream(out_ / "results.json") << "{}";
   EXPECT_EQ(limitEvidenceImages(tests, out_, 0), 2);
   EXPECT_TRUE(fs::exists(out_ / "results.json"));

@@ -9,10 +9,13 @@
 namespace runner {
 namespace {
 
+// The m-th mutant of the table (any will do: the plan only groups by mutant).
+shaders::Mutant mutantNumber(int m) { return shaders::Mutant(m + 1); }
+
 RunUnit unit(std::size_t combination, const std::string& test, int mutants, bool model = true) {
   RunUnit u{combination, test, {}};
-  if (model) u.tasks.push_back({test, test + ".json", "none"});
-  for (int m = 0; m < mutants; ++m) u.tasks.push_back({test, test + ".json", "mutant-" + std::to_string(m)});
+  if (model) u.tasks.push_back({test, test + ".json", shaders::Mutant::None});
+  for (int m = 0; m < mutants; ++m) u.tasks.push_back({test, test + ".json", mutantNumber(m)});
   return u;
 }
 
@@ -86,15 +89,15 @@ TEST(RunPlan, PartsSplitTheModelAndKeepEachMutantWhole) {
   EXPECT_EQ(parts[0].tasks.size(), kModelTestsPerPart);
   EXPECT_EQ(parts[1].tasks.size(), 30 - kModelTestsPerPart);
   EXPECT_EQ(parts[2].tasks.size(), 30u);
-  EXPECT_EQ(parts[2].tasks.front().mutant, "mutant-0");
-  EXPECT_EQ(parts[3].tasks.back().mutant, "mutant-1");
+  EXPECT_EQ(parts[2].tasks.front().mutant, mutantNumber(0));
+  EXPECT_EQ(parts[3].tasks.back().mutant, mutantNumber(1));
   EXPECT_EQ(parts[3].number, 3);
   EXPECT_EQ(parts[4].combination, 1u);
   EXPECT_EQ(parts[4].number, 0);
   ASSERT_EQ(parts[5].tasks.size(), 2u);
-  EXPECT_EQ(parts[5].tasks[0].mutant, "mutant-0");
-  EXPECT_EQ(parts[5].tasks[1].mutant, "mutant-1");
-  for (const WorkerTask& t : parts[0].tasks) EXPECT_EQ(t.mutant, "none");
+  EXPECT_EQ(parts[5].tasks[0].mutant, mutantNumber(0));
+  EXPECT_EQ(parts[5].tasks[1].mutant, mutantNumber(1));
+  for (const WorkerTask& t : parts[0].tasks) EXPECT_TRUE(t.isModelTest());
 }
 
 TEST(RunPlan, SmallMutantsArePackedWholeIntoParts) {
@@ -108,10 +111,10 @@ TEST(RunPlan, SmallMutantsArePackedWholeIntoParts) {
   EXPECT_EQ(parts[1].tasks.size(), 24u);
   EXPECT_EQ(parts[2].tasks.size(), 24u);
   EXPECT_EQ(parts[3].tasks.size(), 12u);
-  // Each mutant whole in one part, in order: mutant-8 starts the second part.
-  EXPECT_EQ(parts[1].tasks.back().mutant, "mutant-7");
-  EXPECT_EQ(parts[2].tasks.front().mutant, "mutant-8");
-  EXPECT_EQ(parts[3].tasks.back().mutant, "mutant-19");
+  // Each mutant whole in one part, in order: the ninth mutant starts the second part.
+  EXPECT_EQ(parts[1].tasks.back().mutant, mutantNumber(7));
+  EXPECT_EQ(parts[2].tasks.front().mutant, mutantNumber(8));
+  EXPECT_EQ(parts[3].tasks.back().mutant, mutantNumber(19));
 }
 
 TEST(RunPlan, PartitionDigestNamesThePartition) {

@@ -1,0 +1,78 @@
+#include "results/result_rules.h"
+
+namespace results {
+
+using comparison::BackendStatus;
+using comparison::MutantStatus;
+using comparison::Verdict;
+
+StatusAndMessage combinedBackendStatus(const std::vector<StatusAndMessage>& parts, std::string_view absentInSome) {
+  StatusAndMessage combined;
+  bool anyRan = false, anyAbsent = false;
+  for (const StatusAndMessage& part : parts) {
+    anyRan = anyRan || part.status == BackendStatus::Ran;
+    anyAbsent = anyAbsent || part.status == BackendStatus::NotSupported;
+    if (part.status == BackendStatus::Error && combined.status != BackendStatus::Error) combined = part;
+  }
+  if (combined.status == BackendStatus::Error || !anyAbsent) return combined;
+  combined.status = anyRan ? BackendStatus::Error : BackendStatus::NotSupported;
+  for (const StatusAndMessage& part : parts)
+    if (part.status == BackendStatus::NotSupported) {
+      combined.message = (anyRan ? std::string(absentInSome) : std::string()) + part.message;
+      break;
+    }
+  return combined;
+}
+
+MutantStatus mutantStatus(const MutantObservations& seen) {
+  return seen.killed          ? MutantStatus::Killed
+         : seen.backendAbsent ? MutantStatus::NotSupported
+         : seen.crashed       ? MutantStatus::Crash
+         : seen.timedOut      ? MutantStatus::Timeout
+                              : MutantStatus::Survived;
+}
+
+MutantObservations observationsOf(MutantStatus status) {
+  return {status == MutantStatus::Killed, status == MutantStatus::NotSupported, status == MutantStatus::Crash,
+          status == MutantStatus::Timeout};
+}
+
+MutantObservations joined(const MutantObservations& a, const MutantObservations& b) {
+  // Absent only where every part was: a backend present in one shard checked the mutant there.
+  return {a.killed || b.killed, a.backendAbsent && b.backendAbsent, a.crashed || b.crashed, a.timedOut || b.timedOut};
+}
+
+bool passed(Verdict raw) { return raw == Verdict::Pass || raw == Verdict::QualityWarning; }
+
+std::map<Verdict, int> countVerdicts(const std::vector<TestRecord>& tests, std::string_view backend) {
+  std::map<Verdict, int> counts;
+  for (const TestRecord& t : tests)
+    if (t.backend == backend) ++counts[t.verdict];
+  return counts;
+}
+
+MutantCounts countMutants(const std::vector<MutantRecord>& mutants, std::string_view backend) {
+  MutantCounts counts;
+  for (const MutantRecord& m : mutants) {
+    if (m.backend != backend) continue;
+    int& bucket = m.status == MutantStatus::Killed     ? counts.killed
+                  : m.status == MutantStatus::Survived ? counts.survived
+                                                       : counts.other;
+    ++bucket;
+  }
+  return counts;
+}
+
+bool runPasses(const RunRecord& run) {
+  for (const TestRecord& t : run.tests)
+    if (comparison::isRunFailure(t.verdict) || (run.flakesFail && t.verdict == Verdict::Flake)) return false;
+  for (const BackendRecord& b : run.backends)
+    if (comparison::isRunFailure(b.status)) return false;
+  for (const MutantRecord& m : run.mutants) {
+    const bool provesNothingYet = run.isShard() && m.status == MutantStatus::Survived;
+    if (comparison::isRunFailure(m.status) && !provesNothingYet) return false;
+  }
+  return true;
+}
+
+}  // namespace results

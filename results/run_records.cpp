@@ -1,0 +1,296 @@
+#include "results/run_records.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace results {
+namespace {
+
+using comparison::Verdict;
+
+// Reading: a key that is missing or of another type reads as its default,
+// so a record of a run that broke half way still reads.
+std::string text(const Json& json, const char* key) {
+  const auto it = json.find(key);
+  return it != json.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+double number(const Json& json, const char* key) {
+  const auto it = json.find(key);
+  return it != json.end() && it->is_number() ? it->get<double>() : 0.0;
+}
+
+Json carried(const Json& json, const char* key, Json absent = nullptr) {
+  const auto it = json.find(key);
+  return it != json.end() ? *it : absent;
+}
+
+std::vector<std::string> texts(const Json& json, const char* key) {
+  std::vector<std::string> items;
+  const auto it = json.find(key);
+  if (it == json.end() || !it->is_array()) return items;
+  for (const Json& item : *it)
+    if (item.is_string()) items.push_back(item.get<std::string>());
+  return items;
+}
+
+Verdict verdictAt(const Json& json, const char* key) {
+  return comparison::parseVerdict(text(json, key)).value_or(Verdict::Crash);
+}
+
+const Json& objectAt(const Json& array, std::size_t i, const char* what) {
+  if (!array[i].is_object()) throw std::invalid_argument(std::string("a record of \"") + what + "\" is not an object");
+  return array[i];
+}
+
+template <typename Record>
+std::vector<Record> recordsAt(const Json& json, const char* key) {
+  std::vector<Record> records;
+  const auto it = json.find(key);
+  if (it == json.end() || !it->is_array()) return records;
+  for (std::size_t i = 0; i < it->size(); ++i) records.push_back(Record::fromJson(objectAt(*it, i, key)));
+  return records;
+}
+
+template <typename Record>
+Json arrayOf(const std::vector<Record>& records) {
+  Json array = Json::array();
+  for (const Record& record : records) array.push_back(record.toJson());
+  return array;
+}
+
+}  // namespace
+
+Json TaskResult::toJson() const {
+  return {{"test", test},           {"raw_verdict", comparison::verdictName(rawVerdict)},
+          {"message", message},     {"metrics", metrics},
+          {"frames", frames},       {"popping_score", poppingScore},
+          {"timings_ms", timingsMs}, {"evidence", evidence}};
+}
+
+TaskResult TaskResult::fromJson(const Json& json) {
+  return {text(json, "test"),          verdictAt(json, "raw_verdict"),   text(json, "message"),
+          carried(json, "metrics"),    carried(json, "frames"),          carried(json, "popping_score"),
+          carried(json, "timings_ms"), carried(json, "evidence")};
+}
+
+TaskResult TaskResult::abnormal(const std::string& test, Verdict verdict, const std::string& message) {
+  TaskResult result;
+  result.test = test;
+  result.rawVerdict = verdict;
+  result.message = message;
+  result.frames = Json::array();
+  return result;
+}
+
+Json AttemptRecord::toJson() const {
+  return {{"raw_verdict", comparison::verdictName(rawVerdict)}, {"message", message}, {"log", log}};
+}
+
+AttemptRecord AttemptRecord::fromJson(const Json& json) {
+  return {verdictAt(json, "raw_verdict"), text(json, "message"), text(json, "log")};
+}
+
+Json TestRecord::toJson() const {
+  Json record = {{"name", name},
+                 {"group", group},
+                 {"scene", scene},
+                 {"scene_file", sceneFile},
+                 {"description", description},
+                 {"backend", backend},
+                 {"verdict", comparison::verdictName(verdict)},
+                 {"raw_verdict", comparison::verdictName(rawVerdict)},
+                 {"expected_reason", expectedReason},
+                 {"message", message},
+                 {"metrics", metrics},
+                 {"frames", frames},
+                 {"popping_score", poppingScore},
+                 {"timings_ms", timingsMs},
+                 {"evidence", evidence}};
+  if (!attempts.empty()) record["attempts"] = arrayOf(attempts);
+  return record;
+}
+
+TestRecord TestRecord::fromJson(const Json& json) {
+  TestRecord t;
+  t.name = text(json, "name");
+  t.group = text(json, "group");
+  t.scene = text(json, "scene");
+  t.sceneFile = text(json, "scene_file");
+  t.description = text(json, "description");
+  t.backend = text(json, "backend");
+  t.verdict = verdictAt(json, "verdict");
+  t.rawVerdict = verdictAt(json, "raw_verdict");
+  t.expectedReason = text(json, "expected_reason");
+  t.message = text(json, "message");
+  t.metrics = carried(json, "metrics");
+  t.frames = carried(json, "frames");
+  t.poppingScore = carried(json, "popping_score");
+  t.timingsMs = carried(json, "timings_ms");
+  t.evidence = carried(json, "evidence");
+  t.attempts = recordsAt<AttemptRecord>(json, "attempts");
+  return t;
+}
+
+TaskTimes& TaskTimes::operator+=(const TaskTimes& other) {
+  tasks += other.tasks;
+  referenceMs += other.referenceMs;
+  totalMs += other.totalMs;
+  return *this;
+}
+
+TaskTimes taskTimesOf(const std::vector<TaskResult>& results) {
+  TaskTimes times;
+  for (const TaskResult& r : results) {
+    if (!r.timingsMs.is_object()) continue;
+    times.referenceMs += number(r.timingsMs, "reference");
+    times.totalMs += number(r.timingsMs, "total");
+    ++times.tasks;
+  }
+  return times;
+}
+
+Json BackendRecord::toJson() const {
+  Json countsJson = Json::object();
+  for (const Verdict verdict : comparison::kAllVerdicts) {
+    const auto it = counts.find(verdict);
+    const int n = it == counts.end() ? 0 : it->second;
+    if (n > 0 || comparison::listedWhenZero(verdict)) countsJson[std::string(comparison::verdictName(verdict))] = n;
+  }
+  return {{"backend", backend},
+          {"api_backend", apiBackend},
+          {"driver_option", driverOption},
+          {"status", comparison::backendStatusName(status)},
+          {"message", message},
+          {"device", device},
+          {"expected_failures_file", expectedFailuresFile},
+          {"counts", countsJson},
+          {"mutant_counts",
+           {{"killed", mutantCounts.killed}, {"survived", mutantCounts.survived}, {"other", mutantCounts.other}}},
+          {"wall_s", wallSeconds},
+          {"task_ms", {{"tasks", taskTimes.tasks}, {"reference", taskTimes.referenceMs}, {"total", taskTimes.totalMs}}},
+          {"log", log}};
+}
+
+BackendRecord BackendRecord::fromJson(const Json& json) {
+  BackendRecord b;
+  b.backend = text(json, "backend");
+  b.apiBackend = text(json, "api_backend");
+  b.driverOption = text(json, "driver_option");
+  b.status = comparison::parseBackendStatus(text(json, "status")).value_or(comparison::BackendStatus::Error);
+  b.message = text(json, "message");
+  b.device = carried(json, "device");
+  b.expectedFailuresFile = text(json, "expected_failures_file");
+  if (const auto counts = json.find("counts"); counts != json.end() && counts->is_object())
+    for (const auto& [word, n] : counts->items())
+      if (const auto verdict = comparison::parseVerdict(word); verdict && n.is_number_integer())
+        b.counts[*verdict] = n.get<int>();
+  const Json mutantCounts = carried(json, "mutant_counts", Json::object());
+  if (mutantCounts.is_object())
+    b.mutantCounts = {int(number(mutantCounts, "killed")), int(number(mutantCounts, "survived")),
+                      int(number(mutantCounts, "other"))};
+  b.wallSeconds = number(json, "wall_s");
+  const Json taskMs = carried(json, "task_ms", Json::object());
+  if (taskMs.is_object())
+    b.taskTimes = {(long long)number(taskMs, "tasks"), number(taskMs, "reference"), number(taskMs, "total")};
+  b.log = text(json, "log");
+  return b;
+}
+
+Json MutantRecord::toJson() const {
+  return {{"mutant", mutant},
+          {"what", what},
+          {"backend", backend},
+          {"status", comparison::mutantStatusName(status)},
+          {"killers", killers},
+          {"killed_by", killedBy},
+          {"evidence", evidence}};
+}
+
+MutantRecord MutantRecord::fromJson(const Json& json) {
+  return {text(json, "mutant"),
+          text(json, "what"),
+          text(json, "backend"),
+          comparison::parseMutantStatus(text(json, "status")).value_or(comparison::MutantStatus::Crash),
+          texts(json, "killers"),
+          texts(json, "killed_by"),
+          carried(json, "evidence")};
+}
+
+Json slowestTests(const std::vector<TestRecord>& tests) {
+  std::vector<std::pair<double, std::string>> times;
+  for (const TestRecord& t : tests)
+    if (t.timingsMs.is_object()) times.emplace_back(number(t.timingsMs, "total"), t.name);
+  std::sort(times.begin(), times.end(), std::greater<>());
+  if (times.size() > 10) times.resize(10);
+  Json slowest = Json::array();
+  for (const auto& [ms, name] : times) slowest.push_back({{"name", name}, {"total_ms", ms}});
+  return slowest;
+}
+
+Json RunRecord::toJson() const {
+  Json run = {{"format", "lightcts-results"},
+              {"version", 1},
+              {"lightcts_revision", lightctsRevision},
+              {"started_utc", startedUtc},
+              {"duration_s", durationSeconds},
+              {"command", command},
+              {"machine", machine},
+              {"scenes_dir", scenesDir},
+              {"scenes_digest", scenesDigest},
+              {"selection", selection},
+              {"baseline_files", baselineFiles},
+              {"mutants_run", mutantsRun},
+              {"mutant_check", mutantCheck},
+              {"mutants_not_checked", mutantsNotChecked},
+              {"evidence_limit", evidenceLimit},
+              {"evidence_url", evidenceUrl},
+              {"jobs", jobs},
+              {"shard", shard}};
+  if (!mergedFrom.is_null()) run["merged_from"] = mergedFrom;
+  run["reference_cache"] = referenceCache;
+  run["timeout_s"] = timeoutSeconds;
+  run["flake_retries"] = flakeRetries;
+  run["flakes_fail"] = flakesFail;
+  run["backends"] = arrayOf(backends);
+  run["tests"] = arrayOf(tests);
+  run["mutants"] = arrayOf(mutants);
+  run["budgets"] = budgets;
+  run["slowest"] = slowestTests(tests);
+  return run;
+}
+
+RunRecord RunRecord::fromJson(const Json& json) {
+  if (!json.is_object() || text(json, "format") != "lightcts-results")
+    throw std::invalid_argument("not a lightcts results.json");
+  RunRecord r;
+  r.lightctsRevision = text(json, "lightcts_revision");
+  r.startedUtc = text(json, "started_utc");
+  r.durationSeconds = number(json, "duration_s");
+  r.command = text(json, "command");
+  r.machine = carried(json, "machine");
+  r.scenesDir = text(json, "scenes_dir");
+  r.scenesDigest = text(json, "scenes_digest");
+  r.selection = carried(json, "selection");
+  r.baselineFiles = carried(json, "baseline_files", Json::array());
+  r.mutantsRun = texts(json, "mutants_run");
+  r.mutantCheck = text(json, "mutant_check");
+  r.mutantsNotChecked = carried(json, "mutants_not_checked", Json::array());
+  r.evidenceLimit = carried(json, "evidence_limit");
+  r.evidenceUrl = text(json, "evidence_url");
+  r.jobs = carried(json, "jobs");
+  r.shard = carried(json, "shard");
+  r.mergedFrom = carried(json, "merged_from");
+  r.referenceCache = carried(json, "reference_cache");
+  r.timeoutSeconds = carried(json, "timeout_s");
+  r.flakeRetries = carried(json, "flake_retries");
+  const Json flakesFail = carried(json, "flakes_fail", false);
+  r.flakesFail = flakesFail.is_boolean() && flakesFail.get<bool>();
+  r.backends = recordsAt<BackendRecord>(json, "backends");
+  r.tests = recordsAt<TestRecord>(json, "tests");
+  r.mutants = recordsAt<MutantRecord>(json, "mutants");
+  r.budgets = carried(json, "budgets", Json::object());
+  return r;
+}
+
+}  // namespace results
