@@ -23,8 +23,8 @@ namespace fs = std::filesystem;
 // resolution (0: no maps), the bake's milliseconds, the texels of every
 // object with maps (lightmap, then shadow mask, N * N * 4 floats each), and a
 // checksum of every byte before it. Bump the version when the layout changes.
-// Version 2: the checksum is XXH3 (version 1 had FNV-1a over 64-bit words);
-// a version 1 file fails the checksum (or else the version) and is a miss.
+// Version 2: the checksum is XXH3. A version 1 file (FNV-1a over 64-bit
+// words) fails the checksum (or else the version) and is a miss.
 constexpr char kMagic[8] = {'L', 'C', 'T', 'S', 'B', 'A', 'K', 'E'};
 constexpr std::uint32_t kFormatVersion = 2;
 constexpr std::size_t kKeyLength = 64;  // hex SHA-256

@@ -18,8 +18,8 @@ namespace backends {
 
 // How gtest prints a combination in messages and in the names ctest lists
 // ("# GetParam() = vulkan"). In the type's own namespace, where gtest's
-// argument-dependent lookup finds it (in backends::testing it was never
-// found, and gtest printed the struct's bytes).
+// argument-dependent lookup finds it (in backends::testing it is not found,
+// and gtest prints the struct's bytes).
 inline void PrintTo(const BackendCombination& c, std::ostream* out) { *out << c.suffix; }
 
 }  // namespace backends

@@ -26,7 +26,7 @@ using backends::testing::Combination;
 // 64 point lights, every one visible: the suite's heaviest forward pass
 // (64x64); and a 96x64 scene, whose new size makes the backends build new
 // targets between two timed draws (on llvmpipe, a GL_TIME_ELAPSED query begun
-// before a new framebuffer reached the driver once read the whole monotonic
+// before a new framebuffer reaches the driver reads the whole monotonic
 // clock: gl_backend.cpp).
 constexpr const char* kScene = LIGHTCTS_SCENES_DIR "/limits/sixty-four-lights.json";
 constexpr const char* kOtherSizeScene = LIGHTCTS_SCENES_DIR "/limits/popping-64-fade.json";

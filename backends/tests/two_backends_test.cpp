@@ -1,7 +1,7 @@
 // Two backends of one combination alive in one process (what a benchmark or
 // a worker that switches shader variants does): each must draw in its own
-// context, whatever the other made current or released. Found by the frame
-// benchmarks, where a GL backend drew into a context another had destroyed.
+// context, whatever the other made current or released: a GL backend that
+// draws into a context another has destroyed fails it.
 // The images are checked against each other, bit for bit: the same scene on
 // the same driver must give the same pixels.
 #include "backends/backend.h"

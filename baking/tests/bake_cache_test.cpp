@@ -189,8 +189,7 @@ INSTANTIATE_TEST_SUITE_P(Damage, DamagedCacheTest,
                          ::testing::Values("truncated", "empty", "extended", "flipped-texel", "flipped-header",
                                            "other-key"));
 
-// The checksum the cache file had before format version 2: FNV-1a over 64-bit
-// little-endian words. Kept here only to prove the damage below is its blind spot.
+// The checksum of format version 1: FNV-1a over 64-bit little-endian words. Kept here only to prove the damage below is its blind spot.
 std::uint64_t fnv1aOverWords(const std::vector<std::uint8_t>& bytes, std::size_t size) {
   std::uint64_t h = 0xcbf29ce484222325ull;
   std::size_t at = 0;
@@ -248,7 +247,7 @@ TEST_F(BakeCacheTest, TwoFlippedSignBitsAtOddWordsAreAMiss) {
 }
 
 // A file of format version 1 (FNV checksum), intact by its own rules, is a
-// miss after the change to XXH3, never an error, and is rewritten.
+// miss under version 2 (XXH3), never an error, and is rewritten.
 TEST_F(BakeCacheTest, FormatVersionOneFileIsAMiss) {
   const auto first = bake(scene());
   const fs::path file = bakeCacheFile(first->cacheKey, options_);

@@ -252,7 +252,7 @@ TEST(BenchReport, SharesThePageFrameWithTheConformanceReport) {
 // field on vulkan, median ms and err_rmse: all-lights 10 1e-4, deferred-hdr32
 // 5 2e-4, deferred-ldr8 3 with 1200 non-finite pixels (its error counters
 // null, as bench.json writes them), deferred-hdr16 2 with 7 non-finite pixels
-// and a zero error (what the reporter wrote before it wrote null). Were
+// and a zero error (what a writer without null would write). Were
 // hdr16 a point, (2 ms, 0) would dominate every other: the front would be it
 // alone. Without the broken two the front is hdr32 and all-lights. The
 // lightmap scene has one mode, realtime, broken: its scene has no plot.

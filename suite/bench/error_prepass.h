@@ -2,8 +2,8 @@
 // timed runs and on every core (the full bench's budget).
 //
 // OpenImageIO's compare_Yee (image_error.h) runs on one thread and takes
-// about 3 s at 1280x720: in a full run it was some 40% of a frame process's
-// time, all of it untimed. So before Google Benchmark starts, every frame
+// about 3 s at 1280x720: run between the timed draws it would be some 40% of
+// a frame process's time, all of it untimed. So before Google Benchmark starts, every frame
 // with an error counter that the filter selects is drawn once and read back
 // on the main thread, and its error is computed on a pool of one thread per
 // core while the next frame draws. Nothing is timed meanwhile; a GL backend
