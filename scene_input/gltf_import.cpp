@@ -3,6 +3,7 @@
 #include "scene_input/gltf_accessors.h"
 #include "scene_input/gltf_json_checks.h"
 #include "scene_input/imported_mesh.h"
+#include "scene_input/json_input.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -82,14 +83,19 @@ std::string glbJson(const std::vector<unsigned char>& bytes, const std::string& 
   return std::string(bytes.begin() + 20, bytes.begin() + 20 + length);
 }
 
+// The JSON read as every input's is (scene_input/json_input.h): invalid
+// JSON, non-finite numbers and repeated keys refused with their place.
 Json parseDocument(const std::string& text, const std::string& file) {
   try {
-    return Json::parse(text);
-  } catch (const Json::exception& error) {
-    std::string what = error.what();
-    const std::size_t bracket = what.find("] ");
-    if (bracket != std::string::npos) what = what.substr(bracket + 2);
-    throw GltfError(file, "", "invalid JSON: " + what);
+    return Json(readJsonInput(text, "a glTF file"));
+  } catch (const JsonInputError& error) {
+    // An error with a JSON path is located by the scene loader, as every
+    // glTF error is; one without (a syntax error) says where itself.
+    const TextPosition at = error.where();
+    const std::string where = error.pointer().empty() && at.line > 0
+                                  ? " (line " + std::to_string(at.line) + ", column " + std::to_string(at.column) + ")"
+                                  : "";
+    throw GltfError(file, error.pointer(), error.message() + where);
   }
 }
 

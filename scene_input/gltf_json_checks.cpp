@@ -2,6 +2,7 @@
 
 #include "scene_input/gltf_import.h"
 #include "scene_input/json_describe.h"
+#include "scene_input/json_input.h"
 
 #include <cmath>
 #include <map>
@@ -72,10 +73,10 @@ class ShapeChecker {
   }
 
   void expectObject(const Json& value, const std::string& pointer) const {
-    if (!value.is_object()) fail(pointer, "expected an object, got " + describeType(value));
+    if (auto problem = kindProblem(value, JsonKind::Object)) fail(pointer, *problem);
   }
   void expectArray(const Json& value, const std::string& pointer) const {
-    if (!value.is_array()) fail(pointer, "expected an array, got " + describeType(value));
+    if (auto problem = kindProblem(value, JsonKind::Array)) fail(pointer, *problem);
   }
 
   std::size_t arraySize(std::string_view key) const {
@@ -106,11 +107,8 @@ class ShapeChecker {
 
   // An integer in [min, max].
   long long integer(const Json& value, const std::string& pointer, long long min, long long max) const {
-    const std::string expected = "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-    if (!isInteger(value)) fail(pointer, expected + ", got " + describeType(value));
-    const double v = value.get<double>();
-    if (v < double(min) || v > double(max)) fail(pointer, expected + ", got " + numberText(value));
-    return value.get<long long>();
+    if (auto problem = integerProblem(value, min, max)) fail(pointer, *problem);
+    return static_cast<long long>(value.get<double>());
   }
 
   // An index into the top-level array `list`.
@@ -126,17 +124,8 @@ class ShapeChecker {
   }
 
   double number(const Json& value, const std::string& pointer, double min, double max, bool minOpen = false) const {
-    if (!value.is_number()) fail(pointer, "expected a number, got " + describeType(value));
-    const double v = value.get<double>();
-    const bool below = minOpen ? !(v > min) : !(v >= min);
-    if (!std::isfinite(v) || below || !(v <= max)) {
-      const std::string low = std::isinf(min) ? "" : (minOpen ? "> " : ">= ") + Json(min).dump();
-      const std::string high = std::isinf(max) ? "" : "<= " + Json(max).dump();
-      fail(pointer, "expected a finite number" + (low.empty() && high.empty() ? "" : " " + low +
-                                                      (low.empty() || high.empty() ? "" : " and ") + high) +
-                        ", got " + numberText(value));
-    }
-    return v;
+    if (auto problem = numberProblem(value, NumberBounds{min, minOpen, max, false})) fail(pointer, *problem);
+    return value.get<double>();
   }
 
   void numbers(const Json& value, const std::string& pointer, std::size_t count, double min, double max) const {
@@ -147,7 +136,7 @@ class ShapeChecker {
   }
 
   void boolean(const Json& value, const std::string& pointer) const {
-    if (!value.is_boolean()) fail(pointer, "expected true or false, got " + describeType(value));
+    if (auto problem = kindProblem(value, JsonKind::Boolean)) fail(pointer, *problem);
   }
 
   // Names are never read by the model, except as object names; a wrong type

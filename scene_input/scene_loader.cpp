@@ -11,6 +11,7 @@
 #include "lighting/visible_lights.h"
 #include "scene_input/gltf_import.h"
 #include "scene_input/json_describe.h"
+#include "scene_input/json_input.h"
 #include "scene_input/json_locations.h"
 
 #include <glm/geometric.hpp>
@@ -21,7 +22,6 @@
 #include <array>
 #include <cctype>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -33,7 +33,6 @@
 #include <span>
 #include <sstream>
 #include <tuple>
-#include <unordered_set>
 #include <utility>
 
 namespace lighting {
@@ -55,7 +54,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Keys = std::span<const std::string_view>;
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // The largest integer a JSON number carries exactly through a double.
 constexpr long long kMaxExactInteger = 9007199254740992LL;  // 2^53
 // 8192 is the largest image side, 4096 the largest mesh tessellation and
@@ -77,12 +75,6 @@ constexpr double kMinUpSine = 1e-6;
                                   std::move(message)});
 }
 
-std::string formatNumber(double value) {
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
-}
-
 std::string joinKeys(Keys keys) {
   std::string joined;
   for (const std::string_view key : keys) {
@@ -102,36 +94,6 @@ std::string describeArrayOrType(const Json& value) {
   return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " value" : " values");
 }
 
-// An interval of allowed numbers, and how a message spells it ("> 0", "in (0, 180]").
-struct Bounds {
-  double min = -kInfinity;
-  bool minOpen = false;
-  double max = kInfinity;
-  bool maxOpen = false;
-
-  bool contains(double v) const {
-    const bool aboveMin = minOpen ? v > min : v >= min;
-    const bool belowMax = maxOpen ? v < max : v <= max;
-    return aboveMin && belowMax;
-  }
-
-  std::string describe() const {
-    const bool hasMin = min > -kInfinity;
-    const bool hasMax = max < kInfinity;
-    if (hasMin && hasMax) {
-      return std::string("in ") + (minOpen ? "(" : "[") + formatNumber(min) + ", " + formatNumber(max) +
-             (maxOpen ? ")" : "]");
-    }
-    if (hasMin) return (minOpen ? "> " : ">= ") + formatNumber(min);
-    if (hasMax) return (maxOpen ? "< " : "<= ") + formatNumber(max);
-    return "";
-  }
-};
-
-constexpr Bounds kAnyNumber{};
-constexpr Bounds above(double min) { return {min, true, kInfinity, false}; }
-constexpr Bounds atLeast(double min) { return {min, false, kInfinity, false}; }
-constexpr Bounds closed(double min, double max) { return {min, false, max, false}; }
 
 template <typename T>
 using Choice = SceneWord<T>;  // lighting/scene_words.h
@@ -302,7 +264,7 @@ class SceneReader {
   }
 
   void expectObject(const Node& node) const {
-    if (!node.value.is_object()) fail(node, "expected an object, got " + describeType(node.value));
+    if (auto problem = kindProblem(node.value, JsonKind::Object)) fail(node, *problem);
   }
 
   std::optional<Node> member(const Node& object, std::string_view key) const {
@@ -339,7 +301,7 @@ class SceneReader {
 
   template <typename T>
   std::vector<T> readArray(const Node& node, T (SceneReader::*readElement)(const Node&, std::size_t) const) const {
-    if (!node.value.is_array()) fail(node, "expected an array, got " + describeType(node.value));
+    if (auto problem = kindProblem(node.value, JsonKind::Array)) fail(node, *problem);
     std::vector<T> elements;
     elements.reserve(node.value.size());
     for (std::size_t i = 0; i < node.value.size(); ++i) {
@@ -350,32 +312,14 @@ class SceneReader {
 
   // --- scalars --------------------------------------------------------------
 
-  double readNumber(const Node& node, const Bounds& bounds = kAnyNumber) const {
-    if (!node.value.is_number()) fail(node, "expected a number, got " + describeType(node.value));
-    const double value = node.value.get<double>();
-    // nlohmann-json 3.11.2 already refuses 1e999 while parsing; this guards
-    // versions that turn it into infinity.
-    if (!std::isfinite(value)) {
-      fail(node, "expected a finite number, got " + formatNumber(value) +
-                     " (non-finite numbers are not allowed in a scene)");
-    }
-    if (!bounds.contains(value)) {
-      fail(node, "expected a number " + bounds.describe() + ", got " + formatNumber(value));
-    }
-    return value;
+  double readNumber(const Node& node, const NumberBounds& bounds = kAnyNumber) const {
+    if (auto problem = numberProblem(node.value, bounds)) fail(node, *problem);
+    return node.value.get<double>();
   }
 
-  // JSON has one number type, so 128.0 counts as an integer (as in JSON Schema);
-  // 1.5 does not.
   long long readInteger(const Node& node, long long min, long long max) const {
-    const std::string expected = "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-    if (!node.value.is_number()) fail(node, expected + ", got " + describeType(node.value));
-    const double value = node.value.get<double>();
-    if (!std::isfinite(value) || std::trunc(value) != value) fail(node, expected + ", got " + formatNumber(value));
-    if (value < static_cast<double>(min) || value > static_cast<double>(max)) {
-      fail(node, expected + ", got " + formatNumber(value));
-    }
-    return static_cast<long long>(value);
+    if (auto problem = integerProblem(node.value, min, max)) fail(node, *problem);
+    return static_cast<long long>(node.value.get<double>());
   }
 
   int readInt(const Node& node, long long min, long long max) const {
@@ -383,12 +327,12 @@ class SceneReader {
   }
 
   bool readBool(const Node& node) const {
-    if (!node.value.is_boolean()) fail(node, "expected true or false, got " + describeType(node.value));
+    if (auto problem = kindProblem(node.value, JsonKind::Boolean)) fail(node, *problem);
     return node.value.get<bool>();
   }
 
   std::string readString(const Node& node) const {
-    if (!node.value.is_string()) fail(node, "expected a string, got " + describeType(node.value));
+    if (auto problem = kindProblem(node.value, JsonKind::String)) fail(node, *problem);
     return node.value.get<std::string>();
   }
 
@@ -404,7 +348,7 @@ class SceneReader {
     fail(node, "expected one of: " + names + "; got '" + text + "'");
   }
 
-  Vec3 readVec3(const Node& node, const Bounds& bounds = kAnyNumber) const {
+  Vec3 readVec3(const Node& node, const NumberBounds& bounds = kAnyNumber) const {
     if (!node.value.is_array() || node.value.size() != 3) {
       fail(node, "expected an array of 3 numbers, got " + describeArrayOrType(node.value));
     }
@@ -421,7 +365,7 @@ class SceneReader {
     const Node version = *member(root, "lightcts");
     if (!version.value.is_number()) fail(version, "expected the format version 1, got " + describeType(version.value));
     const double number = version.value.get<double>();
-    if (number != 1.0) fail(version, "unsupported format version " + formatNumber(number) + "; this loader reads version 1");
+    if (number != 1.0) fail(version, "unsupported format version " + formatJsonNumber(number) + "; this loader reads version 1");
   }
 
   ImageSize readImage(const Node& node) const {
@@ -736,11 +680,11 @@ class SceneReader {
     if (farNode) camera.farPlane = readNumber(*farNode, above(0));
     if (camera.farPlane > camera.nearPlane) return;
     if (farNode) {
-      fail(*farNode, "expected far > near (" + formatNumber(camera.nearPlane) + "), got " +
-                         formatNumber(camera.farPlane));
+      fail(*farNode, "expected far > near (" + formatJsonNumber(camera.nearPlane) + "), got " +
+                         formatJsonNumber(camera.farPlane));
     }
-    fail(*nearNode, "expected near < far (" + formatNumber(camera.farPlane) + ", the default), got " +
-                        formatNumber(camera.nearPlane));
+    fail(*nearNode, "expected near < far (" + formatJsonNumber(camera.farPlane) + ", the default), got " +
+                        formatJsonNumber(camera.nearPlane));
   }
 
   enum class LookAtProblem { SamePoint, UpParallel };
@@ -756,7 +700,7 @@ class SceneReader {
 
   static std::string describe(LookAtProblem problem, const Vec3& up) {
     if (problem == LookAtProblem::SamePoint) return "target must differ from position";
-    return "up [" + formatNumber(up.x) + ", " + formatNumber(up.y) + ", " + formatNumber(up.z) +
+    return "up [" + formatJsonNumber(up.x) + ", " + formatJsonNumber(up.y) + ", " + formatJsonNumber(up.z) +
            "] is parallel to the view direction (target - position)";
   }
 
@@ -957,12 +901,12 @@ class SceneReader {
       if (auto extent = member(*node, "extent")) map.extent = readNumber(*extent, above(0));
     }
     if (!directional && !(map.nearPlane < light.range)) {
-      fail(where, "the shadow map's near plane " + formatNumber(map.nearPlane) + " must lie in (0, range = " +
-                      formatNumber(light.range) + ") (SPEC 2)");
+      fail(where, "the shadow map's near plane " + formatJsonNumber(map.nearPlane) + " must lie in (0, range = " +
+                      formatJsonNumber(light.range) + ") (SPEC 2)");
     }
     if (light.type == LightType::Spot && light.spotAngleDeg > kWidestShadowedSpotDeg) {
       fail(where, "a shadowed spot needs spot_angle_deg <= 170 (SPEC 2), this spot has " +
-                      formatNumber(light.spotAngleDeg));
+                      formatJsonNumber(light.spotAngleDeg));
     }
     if (light.shadows) light.shadowMap = map;
   }
@@ -1006,7 +950,7 @@ class SceneReader {
         requireMember(node, "image");
         if (light.spotAngleDeg > kWidestCookieSpotDeg)
           fail(node, "a spot cookie needs spot_angle_deg <= 170 (SPEC 2), this spot has " +
-                         formatNumber(light.spotAngleDeg));
+                         formatJsonNumber(light.spotAngleDeg));
         readCookieImage(*member(node, "image"), cookie);
         break;
       case LightType::Point: {
@@ -1111,95 +1055,15 @@ class SceneReader {
   std::string file_;
 };
 
-// --- parse errors -----------------------------------------------------------
-
-// nlohmann-json messages start "[json.exception.parse_error.101] parse error at
-// line 1, column 8: "; the position is reported separately, so keep the rest.
-std::string stripExceptionPrefix(const std::string& what) {
-  const std::size_t colon = what.find(": ");
-  return colon == std::string::npos ? what : what.substr(colon + 2);
-}
-
-bool isLiteralChar(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '+'; }
-
-std::string literalAt(std::string_view text, std::size_t start) {
-  std::size_t end = start;
-  while (end < text.size() && isLiteralChar(text[end])) ++end;
-  return std::string(text.substr(start, end - start));
-}
-
-// The start of a NaN or Infinity literal around `offset` (where the parser
-// gave up), or nullopt. Such text is a common way to write a non-finite
-// number, and deserves a clearer message than "invalid literal".
-std::optional<std::size_t> nonFiniteLiteralStart(std::string_view text, std::size_t offset) {
-  std::size_t start = std::min(offset, text.size());
-  while (start > 0 && isLiteralChar(text[start - 1])) --start;
-  if (start > 0 && text[start - 1] == '"') return std::nullopt;  // inside an unterminated string
-  std::size_t letters = start;
-  while (letters < text.size() && (text[letters] == '-' || text[letters] == '+')) ++letters;
-  std::string word;
-  for (std::size_t i = letters; i < text.size() && word.size() < 3; ++i) {
-    word += static_cast<char>(std::tolower(static_cast<unsigned char>(text[i])));
-  }
-  if (word == "nan" || word == "inf") return start;
-  return std::nullopt;
-}
-
-// nlohmann-json 3.11 refuses a number that overflows a double (1e999) with
-// out_of_range.406, which carries no position; find the number in the text.
-std::optional<JsonValueSpan> findOverflowingNumber(std::string_view text) {
-  for (JsonValueSpan& span : scanJsonValues(text)) {
-    const char first = text[span.valueOffset];
-    if (first != '-' && !std::isdigit(static_cast<unsigned char>(first))) continue;
-    const std::string number(text.substr(span.valueOffset, span.valueLength));
-    if (std::isinf(std::strtod(number.c_str(), nullptr))) return std::move(span);
-  }
-  return std::nullopt;
-}
-
-constexpr std::string_view kNonFiniteMessage = "non-finite numbers (NaN, Infinity) are not allowed in a scene";
-
-Json parseJson(std::string_view text, const std::string& file) {
-  try {
-    return Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& error) {
-    // `byte` is the 1-based index of the last character read.
-    const std::size_t offset = error.byte > 0 ? error.byte - 1 : 0;
-    if (auto start = nonFiniteLiteralStart(text, offset)) {
-      throwSceneError(file, "", textPositionAt(text, *start),
-                      std::string(kNonFiniteMessage) + "; found '" + literalAt(text, *start) + "'");
-    }
-    throwSceneError(file, "", textPositionAt(text, offset), "invalid JSON: " + stripExceptionPrefix(error.what()));
-  } catch (const Json::exception& error) {
-    if (auto number = findOverflowingNumber(text)) {
-      throwSceneError(file, number->pointer, textPositionAt(text, number->valueOffset),
-                      std::string(kNonFiniteMessage) + "; " +
-                          std::string(text.substr(number->valueOffset, number->valueLength)) +
-                          " is too large for a double");
-    }
-    throwSceneError(file, "", {}, "invalid JSON: " + stripExceptionPrefix(error.what()));
-  }
-}
-
-// RFC 8259 leaves repeated keys to the parser, and nlohmann-json keeps the
-// last one silently; a scene that says "range" twice is ambiguous, so it is an
-// error. This is the one check that scans the text of every scene.
-void rejectDuplicateKeys(std::string_view text, const std::string& file) {
-  const std::vector<JsonValueSpan> spans = scanJsonValues(text);
-  std::unordered_set<std::string_view> seen;  // views into `spans`
-  for (const JsonValueSpan& span : spans) {
-    if (span.keyOffset == std::string_view::npos || seen.insert(span.pointer).second) continue;
-    const std::string_view escapedKey = std::string_view(span.pointer).substr(span.pointer.rfind('/') + 1);
-    throwSceneError(file, span.pointer, textPositionAt(text, span.keyOffset),
-                    "duplicate key '" + unescapeJsonPointerToken(escapedKey) + "'; each key may appear once");
-  }
-}
-
 }  // namespace
 
 Scene loadSceneText(std::string_view text, const std::string& sourceName) {
-  const Json document = parseJson(text, sourceName);
-  rejectDuplicateKeys(text, sourceName);
+  Json document;
+  try {
+    document = readJsonInput(text, "a scene");
+  } catch (const JsonInputError& error) {
+    throwSceneError(sourceName, error.pointer(), error.where(), error.message());
+  }
   Scene scene = SceneReader(text, sourceName).readScene(document);
   scene.sourcePath = sourceName;
   return scene;

@@ -310,6 +310,16 @@ TEST_F(GltfRefusal, NodeCycle) {
                 "its own ancestor");
 }
 
+// Read by the same JSON reader as a scene file (scene_input/json_input.h).
+TEST_F(GltfRefusal, ARepeatedKeyAsInASceneFile) {
+  expectRefused(triangleGltf(R"([{"mesh": 0, "mesh": 0}])"), "/nodes/0/mesh", "duplicate key 'mesh'");
+}
+
+TEST_F(GltfRefusal, ANonFiniteLiteralAsInASceneFile) {
+  expectRefused(triangleGltf(R"([{"mesh": 0, "translation": [0, NaN, 0]}])"), "",
+                "non-finite numbers (NaN, Infinity) are not allowed in a glTF file");
+}
+
 TEST_F(GltfRefusal, RequiredExtension) {
   expectRefused(triangleGltf(R"([{"mesh": 0}])", "AAEC", R"(, "extensionsRequired": ["KHR_draco_mesh_compression"])"),
                 "/extensionsRequired/0", "lightcts does not read");
