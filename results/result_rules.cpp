@@ -44,6 +44,8 @@ MutantObservations joined(const MutantObservations& a, const MutantObservations&
 
 bool passed(Verdict raw) { return raw == Verdict::Pass || raw == Verdict::QualityWarning; }
 
+bool failedAttempt(Verdict raw) { return raw == Verdict::Fail || raw == Verdict::Crash || raw == Verdict::Timeout; }
+
 std::map<Verdict, int> countVerdicts(const std::vector<TestRecord>& tests, std::string_view backend) {
   std::map<Verdict, int> counts;
   for (const TestRecord& t : tests)

@@ -41,6 +41,9 @@ MutantObservations joined(const MutantObservations& a, const MutantObservations&
 // A model test's raw verdict passes (a QualityWarning included): it ends the
 // retries, and it is the clean verdict a mutant's kill is judged against.
 bool passed(comparison::Verdict raw);
+// An attempt that failed, crashed or timed out: worth a retry (unless its
+// expected-failures line says so), and the attempt a retried test's record shows.
+bool failedAttempt(comparison::Verdict raw);
 
 // The verdicts of `backend`'s tests, and its mutant records' statuses.
 std::map<comparison::Verdict, int> countVerdicts(const std::vector<TestRecord>& tests, std::string_view backend);

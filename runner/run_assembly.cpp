@@ -1,6 +1,7 @@
 #include "runner/run_assembly.h"
 
 #include "conformance/mutant_killers.h"
+#include "results/result_rules.h"
 
 #include <map>
 
@@ -10,8 +11,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 using comparison::BackendStatus;
 using comparison::Verdict;
-
-bool isFailingAttempt(Verdict raw) { return raw == Verdict::Fail || raw == Verdict::Crash || raw == Verdict::Timeout; }
 
 std::string joined(const std::vector<std::string>& items) {
   std::string text;
@@ -27,7 +26,7 @@ results::TestRecord testRecord(const CatalogueEntry& scene, const std::string& s
                                const std::vector<Attempt>& tries, const ExpectedFailure* listed) {
   const bool flake = tries.size() > 1 && results::passed(tries.back().result.rawVerdict);
   std::size_t shown = tries.size() - 1;
-  while (shown > 0 && !isFailingAttempt(tries[shown].result.rawVerdict)) --shown;
+  while (shown > 0 && !results::failedAttempt(tries[shown].result.rawVerdict)) --shown;
   const results::TaskResult& result = tries[shown].result;
   results::TestRecord record;
   record.name = result.test;

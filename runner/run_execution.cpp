@@ -20,8 +20,7 @@ using comparison::Verdict;
 // failure is not retried), is worth another in a fresh worker. An attempt
 // that passes, QualityWarning included, ends the retries.
 bool worthRetrying(Verdict raw, const ExpectedFailure* listed) {
-  const bool failing = raw == Verdict::Fail || raw == Verdict::Crash || raw == Verdict::Timeout;
-  return failing && comparison::isRunFailure(applyExpectation(raw, listed));
+  return results::failedAttempt(raw) && comparison::isRunFailure(applyExpectation(raw, listed));
 }
 
 // logs/<suffix>.log: every part's log, in part order, under a line naming
