@@ -59,19 +59,42 @@ Json arrayOf(const std::vector<Record>& records) {
   return array;
 }
 
+// The outcome's keys after "message", in results.json's order.
+constexpr std::pair<Json TaskOutcome::*, const char*> kOutcomeValues[] = {
+    {&TaskOutcome::metrics, "metrics"},           {&TaskOutcome::frames, "frames"},
+    {&TaskOutcome::poppingScore, "popping_score"}, {&TaskOutcome::timingsMs, "timings_ms"},
+    {&TaskOutcome::evidence, "evidence"}};
+
+void writeOutcome(const TaskOutcome& outcome, Json& json) {
+  json["message"] = outcome.message;
+  for (const auto& [field, key] : kOutcomeValues) json[key] = outcome.*field;
+}
+
+void readOutcome(const Json& json, TaskOutcome& outcome) {
+  outcome.message = text(json, "message");
+  for (const auto& [field, key] : kOutcomeValues) outcome.*field = carried(json, key);
+}
+
+// A test's words before its verdicts, in results.json's order.
+constexpr std::pair<std::string TestRecord::*, const char*> kTestWords[] = {
+    {&TestRecord::name, "name"},           {&TestRecord::group, "group"},
+    {&TestRecord::scene, "scene"},         {&TestRecord::sceneFile, "scene_file"},
+    {&TestRecord::description, "description"}, {&TestRecord::backend, "backend"}};
+
 }  // namespace
 
 Json TaskResult::toJson() const {
-  return {{"test", test},           {"raw_verdict", comparison::verdictName(rawVerdict)},
-          {"message", message},     {"metrics", metrics},
-          {"frames", frames},       {"popping_score", poppingScore},
-          {"timings_ms", timingsMs}, {"evidence", evidence}};
+  Json json = {{"test", test}, {"raw_verdict", comparison::verdictName(rawVerdict)}};
+  writeOutcome(*this, json);
+  return json;
 }
 
 TaskResult TaskResult::fromJson(const Json& json) {
-  return {text(json, "test"),          verdictAt(json, "raw_verdict"),   text(json, "message"),
-          carried(json, "metrics"),    carried(json, "frames"),          carried(json, "popping_score"),
-          carried(json, "timings_ms"), carried(json, "evidence")};
+  TaskResult result;
+  result.test = text(json, "test");
+  result.rawVerdict = verdictAt(json, "raw_verdict");
+  readOutcome(json, result);
+  return result;
 }
 
 TaskResult TaskResult::abnormal(const std::string& test, Verdict verdict, const std::string& message) {
@@ -92,42 +115,23 @@ AttemptRecord AttemptRecord::fromJson(const Json& json) {
 }
 
 Json TestRecord::toJson() const {
-  Json record = {{"name", name},
-                 {"group", group},
-                 {"scene", scene},
-                 {"scene_file", sceneFile},
-                 {"description", description},
-                 {"backend", backend},
-                 {"verdict", comparison::verdictName(verdict)},
-                 {"raw_verdict", comparison::verdictName(rawVerdict)},
-                 {"expected_reason", expectedReason},
-                 {"message", message},
-                 {"metrics", metrics},
-                 {"frames", frames},
-                 {"popping_score", poppingScore},
-                 {"timings_ms", timingsMs},
-                 {"evidence", evidence}};
+  Json record = Json::object();
+  for (const auto& [field, key] : kTestWords) record[key] = this->*field;
+  record["verdict"] = comparison::verdictName(verdict);
+  record["raw_verdict"] = comparison::verdictName(rawVerdict);
+  record["expected_reason"] = expectedReason;
+  writeOutcome(*this, record);
   if (!attempts.empty()) record["attempts"] = arrayOf(attempts);
   return record;
 }
 
 TestRecord TestRecord::fromJson(const Json& json) {
   TestRecord t;
-  t.name = text(json, "name");
-  t.group = text(json, "group");
-  t.scene = text(json, "scene");
-  t.sceneFile = text(json, "scene_file");
-  t.description = text(json, "description");
-  t.backend = text(json, "backend");
+  for (const auto& [field, key] : kTestWords) t.*field = text(json, key);
   t.verdict = verdictAt(json, "verdict");
   t.rawVerdict = verdictAt(json, "raw_verdict");
   t.expectedReason = text(json, "expected_reason");
-  t.message = text(json, "message");
-  t.metrics = carried(json, "metrics");
-  t.frames = carried(json, "frames");
-  t.poppingScore = carried(json, "popping_score");
-  t.timingsMs = carried(json, "timings_ms");
-  t.evidence = carried(json, "evidence");
+  readOutcome(json, t);
   t.attempts = recordsAt<AttemptRecord>(json, "attempts");
   return t;
 }
@@ -260,30 +264,33 @@ Json RunRecord::toJson() const {
   return run;
 }
 
+namespace {
+
+// What a run says of itself: its words and the values it carries through.
+constexpr std::pair<std::string RunRecord::*, const char*> kRunWords[] = {
+    {&RunRecord::lightctsRevision, "lightcts_revision"}, {&RunRecord::startedUtc, "started_utc"},
+    {&RunRecord::command, "command"},                    {&RunRecord::scenesDir, "scenes_dir"},
+    {&RunRecord::scenesDigest, "scenes_digest"},         {&RunRecord::mutantCheck, "mutant_check"},
+    {&RunRecord::evidenceUrl, "evidence_url"}};
+constexpr std::pair<Json RunRecord::*, const char*> kRunValues[] = {
+    {&RunRecord::machine, "machine"},          {&RunRecord::selection, "selection"},
+    {&RunRecord::evidenceLimit, "evidence_limit"}, {&RunRecord::jobs, "jobs"},
+    {&RunRecord::shard, "shard"},              {&RunRecord::mergedFrom, "merged_from"},
+    {&RunRecord::referenceCache, "reference_cache"}, {&RunRecord::timeoutSeconds, "timeout_s"},
+    {&RunRecord::flakeRetries, "flake_retries"}};
+
+}  // namespace
+
 RunRecord RunRecord::fromJson(const Json& json) {
   if (!json.is_object() || text(json, "format") != "lightcts-results")
     throw std::invalid_argument("not a lightcts results.json");
   RunRecord r;
-  r.lightctsRevision = text(json, "lightcts_revision");
-  r.startedUtc = text(json, "started_utc");
+  for (const auto& [field, key] : kRunWords) r.*field = text(json, key);
+  for (const auto& [field, key] : kRunValues) r.*field = carried(json, key);
   r.durationSeconds = number(json, "duration_s");
-  r.command = text(json, "command");
-  r.machine = carried(json, "machine");
-  r.scenesDir = text(json, "scenes_dir");
-  r.scenesDigest = text(json, "scenes_digest");
-  r.selection = carried(json, "selection");
   r.baselineFiles = carried(json, "baseline_files", Json::array());
   r.mutantsRun = texts(json, "mutants_run");
-  r.mutantCheck = text(json, "mutant_check");
   r.mutantsNotChecked = carried(json, "mutants_not_checked", Json::array());
-  r.evidenceLimit = carried(json, "evidence_limit");
-  r.evidenceUrl = text(json, "evidence_url");
-  r.jobs = carried(json, "jobs");
-  r.shard = carried(json, "shard");
-  r.mergedFrom = carried(json, "merged_from");
-  r.referenceCache = carried(json, "reference_cache");
-  r.timeoutSeconds = carried(json, "timeout_s");
-  r.flakeRetries = carried(json, "flake_retries");
   const Json flakesFail = carried(json, "flakes_fail", false);
   r.flakesFail = flakesFail.is_boolean() && flakesFail.get<bool>();
   r.backends = recordsAt<BackendRecord>(json, "backends");

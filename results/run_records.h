@@ -21,19 +21,24 @@ namespace results {
 
 using Json = nlohmann::ordered_json;
 
-// The worker protocol's "result" event (runner/suite_worker.h) without its
-// kind and index: what one task of a worker plan came to.
-struct TaskResult {
-  std::string test;  // <group>.<name>.<suffix>
-  // Workers write only verdictName's words; a result with none (or any
-  // other) is from a worker that broke: it reads as a Crash.
-  comparison::Verdict rawVerdict = comparison::Verdict::Crash;
+// What a task's comparison came to, as a worker reports it and as a test's
+// record keeps it.
+struct TaskOutcome {
   std::string message;
   Json metrics = nullptr;
   Json frames = nullptr;
   Json poppingScore = nullptr;
   Json timingsMs = nullptr;  // the stage times: reference, pipeline, draw, readback, compare, total
   Json evidence = nullptr;
+};
+
+// The worker protocol's "result" event (runner/suite_worker.h) without its
+// kind and index: what one task of a worker plan came to.
+struct TaskResult : TaskOutcome {
+  std::string test;  // <group>.<name>.<suffix>
+  // Workers write only verdictName's words; a result with none (or any
+  // other) is from a worker that broke: it reads as a Crash.
+  comparison::Verdict rawVerdict = comparison::Verdict::Crash;
 
   Json toJson() const;
   static TaskResult fromJson(const Json& json);
@@ -52,8 +57,9 @@ struct AttemptRecord {
   static AttemptRecord fromJson(const Json& json);
 };
 
-// A model test: one scene on one backend combination.
-struct TestRecord {
+// A model test: one scene on one backend combination, and the outcome of
+// the attempt it shows.
+struct TestRecord : TaskOutcome {
   std::string name;  // <group>.<name>.<suffix>
   std::string group;
   std::string scene;
@@ -63,12 +69,6 @@ struct TestRecord {
   comparison::Verdict verdict = comparison::Verdict::Crash;     // after expected failures and retries
   comparison::Verdict rawVerdict = comparison::Verdict::Crash;  // what the shown attempt said
   std::string expectedReason;  // the expected-failures line's reason, "" when not listed
-  std::string message;
-  Json metrics = nullptr;
-  Json frames = nullptr;
-  Json poppingScore = nullptr;
-  Json timingsMs = nullptr;
-  Json evidence = nullptr;
   std::vector<AttemptRecord> attempts;  // a retried test's every attempt; empty (and not written) otherwise
 
   Json toJson() const;

@@ -38,12 +38,7 @@ results::TestRecord testRecord(const CatalogueEntry& scene, const std::string& s
   record.rawVerdict = result.rawVerdict;
   record.verdict = flake ? Verdict::Flake : applyExpectation(result.rawVerdict, listed);
   record.expectedReason = listed ? listed->reason : "";
-  record.message = result.message;
-  record.metrics = result.metrics;
-  record.frames = result.frames;
-  record.poppingScore = result.poppingScore;
-  record.timingsMs = result.timingsMs;
-  record.evidence = result.evidence;
+  static_cast<results::TaskOutcome&>(record) = result;
   if (tries.size() > 1)  // only a retried test has "attempts"
     for (const Attempt& a : tries) record.attempts.push_back({a.result.rawVerdict, a.result.message, a.log});
   return record;
