@@ -52,6 +52,12 @@ struct ShadowPassView {
 };
 std::vector<ShadowPassView> shadowPassViews(const Frame& frame);
 
+// std140, the depth-only pass's per-view block (shaders/shadow_caster.vert).
+struct GpuShadowPassBlock {
+  GpuMat4 clipFromCameraRelative;  // ShadowPassView::clipFromCameraRelative
+};
+static_assert(sizeof(GpuShadowPassBlock) == 64);
+
 // GpuLight::spotAngles.z: a mixed light's shadow-mask channel 0..3 (SPEC
 // 3.5), a real-time light's shadow block slot + kShadowSlotBase (SPEC 3.9),
 // or -1. One light has at most one of the two.

@@ -14,7 +14,7 @@
 // Vulkan: a uniform texel buffer, set 2 (the forward pass binds it once; the
 // deferred passes have their G-buffer there); OpenGL 3.3: a texture
 // buffer on the unit the backend gives the sampler.
-layout(set = 2, binding = 0) uniform usamplerBuffer clusterLists;
+layout(LIGHTCTS_BINDING(clusterLists)) uniform usamplerBuffer clusterLists;
 
 // The specialised shader knows from its constant; the full shader asks.
 bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts[opaque(3)] != 0; }

@@ -14,8 +14,7 @@
 #ifndef LIGHTCTS_COOKIES_GLSL
 #define LIGHTCTS_COOKIES_GLSL
 
-#include "features.glsl"
-#include "mutants.glsl"
+#include "shader_interface.glsl"
 #include "light_data.glsl"
 
 // lighting::GpuCookie, std140.
@@ -25,16 +24,16 @@ struct Cookie {
 };
 
 // lighting::GpuCookieBlock: the four 2D slots, then the two cube slots.
-layout(std140, set = 3, binding = 0) uniform CookieBlock {
+layout(std140, LIGHTCTS_BINDING(CookieBlock)) uniform CookieBlock {
   Cookie cookies[6];
 } cookieData;
 
-layout(set = 3, binding = 1) uniform sampler2D cookieTexture0;
-layout(set = 3, binding = 2) uniform sampler2D cookieTexture1;
-layout(set = 3, binding = 3) uniform sampler2D cookieTexture2;
-layout(set = 3, binding = 4) uniform sampler2D cookieTexture3;
-layout(set = 3, binding = 5) uniform samplerCube cookieCube0;
-layout(set = 3, binding = 6) uniform samplerCube cookieCube1;
+layout(LIGHTCTS_BINDING(cookieTexture0)) uniform sampler2D cookieTexture0;
+layout(LIGHTCTS_BINDING(cookieTexture1)) uniform sampler2D cookieTexture1;
+layout(LIGHTCTS_BINDING(cookieTexture2)) uniform sampler2D cookieTexture2;
+layout(LIGHTCTS_BINDING(cookieTexture3)) uniform sampler2D cookieTexture3;
+layout(LIGHTCTS_BINDING(cookieCube0)) uniform samplerCube cookieCube0;
+layout(LIGHTCTS_BINDING(cookieCube1)) uniform samplerCube cookieCube1;
 
 const int kCookieNone = 0;  // lighting::GpuCookieKind
 const int kCookieDirectional = 1;
@@ -81,7 +80,7 @@ float cubeCookieValue(Cookie cookie, samplerCube image, vec3 p) {
   if (int(cookie.params.x) == kCookieNone) return 1.0;
   vec3 q = (cookie.toCookie * vec4(p, 1.0)).xyz;
   // Mutant: the cube turned 90 degrees about the light's y axis.
-  if (MUTANT == MUTANT_CUBE_COOKIE_ROTATED) q = vec3(q.z, q.y, -q.x);
+  if (MUTANT == MUTANT_CUBE_COOKIE_ROTATED_90) q = vec3(q.z, q.y, -q.x);
   return textureLod(image, q, 0.0).r;
 }
 

@@ -3,8 +3,7 @@
 // Deferred composite pass (SPEC 3.7): base (ambient and lightmap, times
 // albedo) plus the decoded light buffer, into the image the forward path
 // renders. Background: base 0 and the buffer's clear value decode to 0.
-#include "features.glsl"
-#include "mutants.glsl"
+#include "shader_interface.glsl"
 #include "deferred_data.glsl"
 
 layout(location = 0) out vec4 outColor;

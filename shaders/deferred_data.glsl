@@ -1,15 +1,15 @@
 // The deferred path's per-frame block and G-buffer textures (SPEC 3.7), used
 // by the light and composite passes; std140 as lighting/deferred_lights.h
-// lays it out. Vulkan: set 0 binding 3, the textures in set 2; OpenGL binds
-// blocks and samplers by name (GLSL 330 has no binding qualifiers). The light
-// pass's own block is in deferred_light_data.glsl.
+// lays it out, at the bindings of shader_interface.def (the textures in set
+// 2); OpenGL binds blocks and samplers by name (GLSL 330 has no binding
+// qualifiers). The light pass's own block is in deferred_light_data.glsl.
 #ifndef LIGHTCTS_DEFERRED_DATA_GLSL
 #define LIGHTCTS_DEFERRED_DATA_GLSL
 
-#include "features.glsl"
+#include "shader_interface.glsl"
 
 // Per frame (lighting::GpuDeferredFrameBlock).
-layout(std140, set = 0, binding = 3) uniform DeferredFrameBlock {
+layout(std140, LIGHTCTS_BINDING(DeferredFrameBlock)) uniform DeferredFrameBlock {
   mat4 inverseViewProjection;  // clip (x right, y up, depth 0..1) to camera-relative world
   ivec4 bufferFormat;          // x: 0 hdr32, 1 hdr16, 2 ldr8 (GpuDeferredFrameBlock::buffer; `buffer` is a GLSL keyword); y: 0
 } deferredFrame;
@@ -29,11 +29,11 @@ const float kLdr8SmallestDecoded = 1.0 / 255.0;
 
 // The G-buffer, RGBA32F each, read with texelFetch at this fragment's pixel
 // (the same API and framebuffer as the G-buffer pass wrote, so the same texel).
-layout(set = 2, binding = 0) uniform sampler2D gbufferAlbedo;  // rgb albedo; a = 1 drawn, 0 background
-layout(set = 2, binding = 1) uniform sampler2D gbufferNormal;  // xyz unit normal; w window depth 0..1
-layout(set = 2, binding = 2) uniform sampler2D gbufferBase;    // rgb albedo * (ambient + lightmap)
-layout(set = 2, binding = 3) uniform sampler2D gbufferMask;    // the shadow mask, all ones without one
-layout(set = 2, binding = 4) uniform sampler2D gbufferMaterial;  // x metallic, y smoothness, z 1 srp / 0 Lambert
-layout(set = 2, binding = 5) uniform sampler2D lightBuffer;    // the light pass's sum (hdr) or product (ldr8)
+layout(LIGHTCTS_BINDING(gbufferAlbedo)) uniform sampler2D gbufferAlbedo;  // rgb albedo; a = 1 drawn, 0 background
+layout(LIGHTCTS_BINDING(gbufferNormal)) uniform sampler2D gbufferNormal;  // xyz unit normal; w window depth 0..1
+layout(LIGHTCTS_BINDING(gbufferBase)) uniform sampler2D gbufferBase;    // rgb albedo * (ambient + lightmap)
+layout(LIGHTCTS_BINDING(gbufferMask)) uniform sampler2D gbufferMask;    // the shadow mask, all ones without one
+layout(LIGHTCTS_BINDING(gbufferMaterial)) uniform sampler2D gbufferMaterial;  // x metallic, y smoothness, z 1 srp / 0 Lambert
+layout(LIGHTCTS_BINDING(lightBuffer)) uniform sampler2D lightBuffer;    // the light pass's sum (hdr) or product (ldr8)
 
 #endif

@@ -4,8 +4,7 @@
 #ifndef LIGHTCTS_LIGHT_DATA_GLSL
 #define LIGHTCTS_LIGHT_DATA_GLSL
 
-#include "features.glsl"
-#include "mutants.glsl"
+#include "shader_interface.glsl"
 
 struct Light {
   vec4 position;       // xyz: camera-relative position, or L = -direction; w: 1 local, 0 directional
@@ -14,7 +13,7 @@ struct Light {
   vec4 spotAngles;     // x: a, y: b (point: 0, 1); z: shadow-mask channel 0-3, shadow-map slot + 4 (shadows.glsl), or -1; w: mask strength
 };
 
-layout(std140, set = 0, binding = 0) uniform FrameBlock {
+layout(std140, LIGHTCTS_BINDING(FrameBlock)) uniform FrameBlock {
   mat4 viewProjection;  // camera-relative world to clip: x right, y up, depth 0..1
   vec4 ambient;
   ivec4 lightCounts;    // x: directional lights, y: other lights, z: 1 for the legacy profile, w: 1 clustered (clusters.glsl)

@@ -5,8 +5,7 @@
 #ifndef LIGHTCTS_LIGHTING_GLSL
 #define LIGHTCTS_LIGHTING_GLSL
 
-#include "features.glsl"
-#include "mutants.glsl"
+#include "shader_interface.glsl"
 #include "light_data.glsl"
 #include "cookies.glsl"
 #include "shadows.glsl"
@@ -33,7 +32,7 @@ float square(float x) { return x * x; }
 // SPEC 3.2: distSqr = max(dot(ray, ray), 1e-5), so L and 1/distSqr stay
 // finite when the point lies on the light.
 float clampedDistanceSquared(vec3 ray) {
-  float minimum = MUTANT == MUTANT_DISTANCE_CLAMP_1EM4 ? 1e-4 : 1e-5;
+  float minimum = MUTANT == MUTANT_DISTANCE_CLAMP_1E_4 ? 1e-4 : 1e-5;
   return max(dot(ray, ray), minimum);
 }
 

@@ -1,15 +1,14 @@
 // The per-object uniform block of the forward and G-buffer passes, std140 as
 // lighting::GpuObjectBlock lays it out. Apart from light_data.glsl so that
 // the deferred light and composite passes, which draw no object, do not
-// declare it (their pipelines have no binding 1).
+// declare it (their pipelines have no ObjectBlock binding).
 #ifndef LIGHTCTS_OBJECT_DATA_GLSL
 #define LIGHTCTS_OBJECT_DATA_GLSL
 
-#include "features.glsl"
-#include "mutants.glsl"
+#include "shader_interface.glsl"
 #include "light_data.glsl"
 
-layout(std140, set = 0, binding = 1) uniform ObjectBlock {
+layout(std140, LIGHTCTS_BINDING(ObjectBlock)) uniform ObjectBlock {
   mat4 model;           // local to camera-relative world
   mat4 normalMatrix;    // the rotation R (SPEC 1)
   vec4 albedo;

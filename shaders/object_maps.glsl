@@ -7,8 +7,8 @@
 #ifndef LIGHTCTS_OBJECT_MAPS_GLSL
 #define LIGHTCTS_OBJECT_MAPS_GLSL
 
-layout(set = 1, binding = 0) uniform sampler2D lightmapTexture;
-layout(set = 1, binding = 1) uniform sampler2D shadowMaskTexture;
+layout(LIGHTCTS_BINDING(lightmapTexture)) uniform sampler2D lightmapTexture;
+layout(LIGHTCTS_BINDING(shadowMaskTexture)) uniform sampler2D shadowMaskTexture;
 
 // SPEC 3.5: the object's shadow mask at the fragment, all ones without one.
 vec4 objectShadowMask(vec2 lightmapUv) {

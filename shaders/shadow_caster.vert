@@ -8,7 +8,7 @@
 // [-1, 1], depth z/w in [0, 1]).
 #include "object_data.glsl"
 
-layout(std140, set = 0, binding = 0) uniform ShadowPassBlock {
+layout(std140, LIGHTCTS_BINDING(ShadowPassBlock)) uniform ShadowPassBlock {
   mat4 clipFromCameraRelative;
 } shadowPass;
 

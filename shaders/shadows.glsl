@@ -17,8 +17,7 @@
 #ifndef LIGHTCTS_SHADOWS_GLSL
 #define LIGHTCTS_SHADOWS_GLSL
 
-#include "features.glsl"
-#include "mutants.glsl"
+#include "shader_interface.glsl"
 #include "light_data.glsl"
 
 // lighting::GpuShadow, std140.
@@ -30,17 +29,17 @@ struct Shadow {
 };
 
 // lighting::GpuShadowBlock: the four 2D slots, then the two cube slots.
-layout(std140, set = 3, binding = 7) uniform ShadowBlock {
+layout(std140, LIGHTCTS_BINDING(ShadowBlock)) uniform ShadowBlock {
   Shadow shadows[6];
   vec4 fade;  // xyz: the camera's forward axis; w: shadow_distance S
 } shadowData;
 
-layout(set = 3, binding = 8) uniform sampler2DShadow shadowMap0;
-layout(set = 3, binding = 9) uniform sampler2DShadow shadowMap1;
-layout(set = 3, binding = 10) uniform sampler2DShadow shadowMap2;
-layout(set = 3, binding = 11) uniform sampler2DShadow shadowMap3;
-layout(set = 3, binding = 12) uniform samplerCubeShadow shadowCube0;
-layout(set = 3, binding = 13) uniform samplerCubeShadow shadowCube1;
+layout(LIGHTCTS_BINDING(shadowMap0)) uniform sampler2DShadow shadowMap0;
+layout(LIGHTCTS_BINDING(shadowMap1)) uniform sampler2DShadow shadowMap1;
+layout(LIGHTCTS_BINDING(shadowMap2)) uniform sampler2DShadow shadowMap2;
+layout(LIGHTCTS_BINDING(shadowMap3)) uniform sampler2DShadow shadowMap3;
+layout(LIGHTCTS_BINDING(shadowCube0)) uniform samplerCubeShadow shadowCube0;
+layout(LIGHTCTS_BINDING(shadowCube1)) uniform samplerCubeShadow shadowCube1;
 
 const int kShadowNone = 0;  // lighting::GpuShadowKind
 const int kShadowOrthographic = 1;

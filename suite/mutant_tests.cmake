@@ -2,10 +2,11 @@
 # which defines backend_combinations, split_combination and backend_test_environment.
 #
 # Every deliberately wrong variant of the model (shaders::mutantNames(),
-# shaders/mutants.glsl) must make at least one scene fail, on every backend and
-# driver: mutants.<mutant>.<backend-suffix>, labels "mutants;<suffix>". Each
-# runs its killers, the scenes meant to catch it, from the one table
-# suite/mutant_killers.def (the same that `lightcts run` checks by default).
+# shaders/shader_interface.def) must make at least one scene fail, on every
+# backend and driver: mutants.<mutant>.<backend-suffix>, labels
+# "mutants;<suffix>". Each runs its killers, the scenes meant to catch it,
+# from the one table suite/mutant_killers.def (the same that `lightcts run`
+# checks by default).
 include(${CMAKE_CURRENT_LIST_DIR}/mutant_killers.cmake)
 foreach(entry ${mutant_killers})
   string(REPLACE "=" ";" mutant_parts ${entry})

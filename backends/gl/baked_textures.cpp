@@ -57,9 +57,9 @@ void BakedTextures::bind(int object) const {
   const bool known = object >= 0 && std::size_t(object) < objects_.size();
   const GLuint lightmap = known && objects_[object].lightmap.get() ? objects_[object].lightmap.get() : noLightmap_.get();
   const GLuint mask = known && objects_[object].shadowMask.get() ? objects_[object].shadowMask.get() : noShadowMask_.get();
-  gl_.glActiveTexture(GL_TEXTURE0 + kLightmapTextureUnit);
+  gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kLightmapTexture.glUnit());
   gl_.glBindTexture(GL_TEXTURE_2D, lightmap);
-  gl_.glActiveTexture(GL_TEXTURE0 + kShadowMaskTextureUnit);
+  gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kShadowMaskTexture.glUnit());
   gl_.glBindTexture(GL_TEXTURE_2D, mask);
 }
 

@@ -12,7 +12,7 @@
 namespace backends::gl {
 
 void bindClusterListsInterface(const GlFunctions& gl, GLuint program) {
-  bindSampler(gl, program, "clusterLists", kClusterListsUnit);
+  bindSamplers(gl, program, shaders::binding::kClusterLists);
 }
 
 ClusterLists::ClusterLists(const GlFunctions& gl)
@@ -41,7 +41,7 @@ void ClusterLists::update(const lighting::Frame& frame) {
   gl_.glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * sizeof(std::uint32_t)), texels.data(),
                    GL_STREAM_DRAW);
   gl_.glBindBuffer(GL_TEXTURE_BUFFER, 0);
-  gl_.glActiveTexture(GL_TEXTURE0 + kClusterListsUnit);
+  gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kClusterLists.glUnit());
   gl_.glBindTexture(GL_TEXTURE_BUFFER, texture_.get());
   gl_.glActiveTexture(GL_TEXTURE0);
   gl_.check("uploading the cluster lists");

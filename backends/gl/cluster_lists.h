@@ -1,6 +1,6 @@
 // The clustered mode's light lists (shaders/clusters.glsl) as an
-// OpenGL 3.3 texture buffer of GL_R32UI texels on kClusterListsUnit, the
-// forward program's `clusterLists` sampler. Every forward frame writes it:
+// OpenGL 3.3 texture buffer of GL_R32UI texels on the unit of the forward
+// program's `clusterLists` sampler (shaders/shader_interface.def). Every forward frame writes it:
 // the frame's lists in the clustered mode, one zero texel otherwise, so the
 // full shader's sampler always has a complete texture.
 #pragma once
@@ -11,10 +11,7 @@
 
 namespace backends::gl {
 
-// The unit after the shadow maps' (shadow_maps.h); only the forward program samples it.
-constexpr GLint kClusterListsUnit = kShadowUnitsEnd;
-
-// Points `program`'s clusterLists sampler at kClusterListsUnit; needs
+// Points `program`'s clusterLists sampler at its unit; needs
 // `program` current. A program without it (specialised off) is skipped.
 void bindClusterListsInterface(const GlFunctions& gl, GLuint program);
 
@@ -23,7 +20,7 @@ class ClusterLists {
   explicit ClusterLists(const GlFunctions& gl);
 
   // Uploads `frame`'s texels (lighting::packFrameClusterTexels) and binds the
-  // texture to kClusterListsUnit; throws NotSupportedError past the driver's
+  // texture to its unit; throws NotSupportedError past the driver's
   // GL_MAX_TEXTURE_BUFFER_SIZE.
   void update(const lighting::Frame& frame);
 

@@ -9,21 +9,14 @@
 #include <string>
 
 namespace backends::gl {
-namespace {
 
-const char* const kTextureSamplers[lighting::kMaxCookieTextures] = {"cookieTexture0", "cookieTexture1",
-                                                                     "cookieTexture2", "cookieTexture3"};
-const char* const kCubeSamplers[lighting::kMaxCookieCubes] = {"cookieCube0", "cookieCube1"};
-
-
-}  // namespace
+static_assert(shaders::binding::kCookieTexture.count() == lighting::kMaxCookieTextures);
+static_assert(shaders::binding::kCookieCube.count() == lighting::kMaxCookieCubes);
 
 void bindCookieInterface(const GlFunctions& gl, GLuint program) {
-  bindUniformBlock(gl, program, "CookieBlock", kCookieBlockBinding);
-  for (int s = 0; s < lighting::kMaxCookieTextures; ++s)
-    bindSampler(gl, program, kTextureSamplers[s], kFirstCookieTextureUnit + s);
-  for (int s = 0; s < lighting::kMaxCookieCubes; ++s)
-    bindSampler(gl, program, kCubeSamplers[s], kFirstCookieCubeUnit + s);
+  bindUniformBlock(gl, program, shaders::binding::kCookieBlock);
+  bindSamplers(gl, program, shaders::binding::kCookieTexture);
+  bindSamplers(gl, program, shaders::binding::kCookieCube);
 }
 
 CookieTextures::CookieTextures(const GlFunctions& gl) : gl_(gl) {
@@ -41,17 +34,17 @@ void CookieTextures::update(const lighting::Frame& frame) {
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, block_.get());
   gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
-  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kCookieBlockBinding, block_.get(), 0, sizeof(block));
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kCookieBlock.glBinding, block_.get(), 0, sizeof(block));
   // Every unit gets its slot's texture or none: a slot the frame does not
   // use is never sampled (its lights carry slot -1).
   const lighting::CookieSlots& slots = frame.cookies;
   for (int s = 0; s < lighting::kMaxCookieTextures; ++s) {
-    gl_.glActiveTexture(GL_TEXTURE0 + kFirstCookieTextureUnit + s);
+    gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kCookieTexture.glUnit(s));
     const bool used = s < int(slots.textureLights.size());
     gl_.glBindTexture(GL_TEXTURE_2D, used ? textures_[slots.textureLights[s]].get() : 0);
   }
   for (int s = 0; s < lighting::kMaxCookieCubes; ++s) {
-    gl_.glActiveTexture(GL_TEXTURE0 + kFirstCookieCubeUnit + s);
+    gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kCookieCube.glUnit(s));
     const bool used = s < int(slots.cubeLights.size());
     gl_.glBindTexture(GL_TEXTURE_CUBE_MAP, used ? textures_[slots.cubeLights[s]].get() : 0);
   }

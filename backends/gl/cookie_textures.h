@@ -3,8 +3,8 @@
 // (backends/cookie_texels.h), one level, LINEAR; 2D cookies repeat
 // (directional) or clamp to edge (spot), cubes are seamless
 // (GL_TEXTURE_CUBE_MAP_SEAMLESS, on for the backend's context). Each frame
-// writes the lighting::GpuCookieBlock and binds the slots' textures to the
-// units below, the same units for every program that lights.
+// writes the lighting::GpuCookieBlock and binds the slots' textures to their
+// units, the same units for every program that lights.
 #pragma once
 
 #include "backends/gl/gl_objects.h"
@@ -16,16 +16,10 @@
 
 namespace backends::gl {
 
-constexpr GLuint kCookieBlockBinding = 4;
-// Units after the forward maps (0, 1) and the deferred G-buffer and light
-// buffer (2-7): the 2D slots, then the cube slots. Every cookie sampler has
-// its own unit: GL refuses a draw where a sampler2D and a samplerCube share one.
-constexpr GLint kFirstCookieTextureUnit = 8;
-constexpr GLint kFirstCookieCubeUnit = kFirstCookieTextureUnit + lighting::kMaxCookieTextures;
-
-// Points `program`'s CookieBlock and cookie samplers at the binding and
-// units above; needs `program` current. What a specialised program does not
-// use is skipped.
+// Points `program`'s CookieBlock and cookie samplers at their binding point
+// and units (shaders/shader_interface.def: the 2D slots, then the cube slots,
+// each sampler on its own unit); needs `program` current. What a specialised
+// program does not use is skipped.
 void bindCookieInterface(const GlFunctions& gl, GLuint program);
 
 class CookieTextures {

@@ -5,16 +5,9 @@
 #include "backends/gl/program_builder.h"
 #include "backends/gl/shadow_maps.h"
 #include "shaders/embedded_spirv.h"
+#include "shaders/gbuffer_textures.h"
 
 namespace backends::gl {
-namespace {
-
-// Every G-buffer texture's sampler (shaders/deferred_data.glsl), in
-// GbufferTexture order.
-constexpr const char* kGbufferSamplers[kGbufferColourCount] = {"gbufferAlbedo", "gbufferNormal", "gbufferBase",
-                                                               "gbufferMask", "gbufferMaterial"};
-
-}  // namespace
 
 DeferredProgramSet DeferredPrograms::programs(const shaders::ConstantValues& constants,
                                               const std::vector<shaders::ConstantValues>& lightConstants) {
@@ -52,12 +45,11 @@ GlName DeferredPrograms::buildGbuffer(const shaders::ConstantValues& constants) 
 GlName DeferredPrograms::buildLight(const shaders::ConstantValues& constants) const {
   GlName program = linkProgram(gl_, shaders::deferredLightVertexGlsl330(), shaders::deferredLightFragmentGlsl330(),
                                constants, "the deferred light program");
-  bindUniformBlock(gl_, program.get(), "FrameBlock", kFrameBlockBinding);
-  bindUniformBlock(gl_, program.get(), "DeferredLightBlock", kDeferredLightBlockBinding);
-  bindUniformBlock(gl_, program.get(), "DeferredFrameBlock", kDeferredFrameBlockBinding);
+  bindUniformBlock(gl_, program.get(), shaders::binding::kFrameBlock);
+  bindUniformBlock(gl_, program.get(), shaders::binding::kDeferredLightBlock);
+  bindUniformBlock(gl_, program.get(), shaders::binding::kDeferredFrameBlock);
   gl_.glUseProgram(program.get());
-  for (int t = 0; t < kGbufferColourCount; ++t)
-    bindSampler(gl_, program.get(), kGbufferSamplers[t], kFirstGbufferTextureUnit + t);
+  for (const shaders::binding::Texture& texture : shaders::kGbufferTextures) bindSamplers(gl_, program.get(), texture);
   bindCookieInterface(gl_, program.get());
   bindShadowInterface(gl_, program.get());  // SPEC 3.9: the light pass reads the maps
   return program;
@@ -67,11 +59,10 @@ GlName DeferredPrograms::buildComposite(const shaders::ConstantValues& constants
   GlName program = linkProgram(gl_, shaders::deferredCompositeVertexGlsl330(),
                                shaders::deferredCompositeFragmentGlsl330(), constants,
                                "the deferred composite program");
-  bindUniformBlock(gl_, program.get(), "DeferredFrameBlock", kDeferredFrameBlockBinding);
+  bindUniformBlock(gl_, program.get(), shaders::binding::kDeferredFrameBlock);
   gl_.glUseProgram(program.get());
-  for (int t = 0; t < kGbufferColourCount; ++t)
-    bindSampler(gl_, program.get(), kGbufferSamplers[t], kFirstGbufferTextureUnit + t);
-  bindSampler(gl_, program.get(), "lightBuffer", kLightBufferTextureUnit);
+  for (const shaders::binding::Texture& texture : shaders::kGbufferTextures) bindSamplers(gl_, program.get(), texture);
+  bindSamplers(gl_, program.get(), shaders::binding::kLightBuffer);
   return program;
 }
 

@@ -4,13 +4,15 @@
 // light's texture slots), linked on first use:
 //   G-buffer:  forward.vert + gbuffer.frag; blocks and baked-map samplers
 //              exactly as the forward program binds them;
-//   light:     deferred_light.vert + .frag; FrameBlock (binding 0, for the
-//              view-projection), DeferredLightBlock (2), DeferredFrameBlock (3),
-//              the cookies' and shadow maps' blocks and samplers
+//   light:     deferred_light.vert + .frag; FrameBlock (for the
+//              view-projection), DeferredLightBlock, DeferredFrameBlock, the
+//              G-buffer, the cookies' and shadow maps' blocks and samplers
 //              (cookie_textures.h, shadow_maps.h);
-//   composite: deferred_composite.vert + .frag; DeferredFrameBlock (3).
-// The G-buffer textures and the light buffer have texture units of their
-// own, after the baked maps' units 0 and 1, so no pass rebinds another's.
+//   composite: deferred_composite.vert + .frag; DeferredFrameBlock, the
+//              G-buffer and the light buffer.
+// Binding points and texture units are shaders/shader_interface.def's: the
+// G-buffer textures and the light buffer have units of their own, so no pass
+// rebinds another's.
 #pragma once
 
 #include "backends/gl/gbuffer_targets.h"
@@ -21,12 +23,6 @@
 #include <vector>
 
 namespace backends::gl {
-
-constexpr GLuint kDeferredLightBlockBinding = 2;
-constexpr GLuint kDeferredFrameBlockBinding = 3;
-// Texture unit of G-buffer texture t: kFirstGbufferTextureUnit + t.
-constexpr GLint kFirstGbufferTextureUnit = 2;
-constexpr GLint kLightBufferTextureUnit = kFirstGbufferTextureUnit + kGbufferColourCount;
 
 struct DeferredProgramSet {
   GLuint gbuffer = 0;

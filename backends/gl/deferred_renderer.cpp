@@ -2,6 +2,7 @@
 
 #include "backends/gl/forward_programs.h"
 #include "backends/gl/raster_state_gl.h"
+#include "shaders/gbuffer_textures.h"
 
 #include <algorithm>
 #include <cstring>
@@ -104,14 +105,14 @@ void DeferredRenderer::drawLights(const std::vector<GLuint>& programs, const Sce
   applyLightBlend(gl_, buffer.blend);
   gl_.glBindVertexArray(volumeArray_.get());
   scene.bindFrameBlock();
-  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredFrameBlockBinding, frameUniforms_.get(), 0,
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kDeferredFrameBlock.glBinding, frameUniforms_.get(), 0,
                         sizeof(lighting::GpuDeferredFrameBlock));
   bindGbufferTextures();
   GLuint bound = 0;
   for (std::size_t d = 0; d < draws_.size(); ++d) {
     if (draws_[d].vertexCount == 0) continue;
     if (programs.at(d) != bound) gl_.glUseProgram(bound = programs[d]);  // the light's own slots
-    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredLightBlockBinding, lightUniforms_.get(),
+    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kDeferredLightBlock.glBinding, lightUniforms_.get(),
                           GLintptr(d * lightStride_), sizeof(lighting::GpuDeferredLightBlock));
     applyRasterState(gl_, lighting::lightVolumeRasterState(draws_[d].shape, volumeRule_));
     gl_.glDrawArrays(GL_TRIANGLES, draws_[d].firstVertex, draws_[d].vertexCount);
@@ -126,9 +127,9 @@ void DeferredRenderer::drawComposite(GLuint program, GLuint outputFramebuffer) {
   gl_.glDisable(GL_CULL_FACE);
   gl_.glDisable(GL_BLEND);
   gl_.glUseProgram(program);
-  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kDeferredFrameBlockBinding, frameUniforms_.get(), 0,
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kDeferredFrameBlock.glBinding, frameUniforms_.get(), 0,
                         sizeof(lighting::GpuDeferredFrameBlock));
-  gl_.glActiveTexture(GL_TEXTURE0 + kLightBufferTextureUnit);
+  gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kLightBuffer.glUnit());
   gl_.glBindTexture(GL_TEXTURE_2D, targets_.lightBuffer());
   gl_.glBindVertexArray(emptyArray_.get());
   gl_.glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -137,7 +138,7 @@ void DeferredRenderer::drawComposite(GLuint program, GLuint outputFramebuffer) {
 
 void DeferredRenderer::bindGbufferTextures() const {
   for (int t = 0; t < kGbufferColourCount; ++t) {
-    gl_.glActiveTexture(GLenum(GL_TEXTURE0 + kFirstGbufferTextureUnit + t));
+    gl_.glActiveTexture(GLenum(GL_TEXTURE0 + shaders::kGbufferTextures[t].glUnit()));
     gl_.glBindTexture(GL_TEXTURE_2D, targets_.texture(GbufferTexture(t)));
   }
 }
@@ -145,10 +146,12 @@ void DeferredRenderer::bindGbufferTextures() const {
 // No target stays bound to a texture unit while the next frame renders into
 // it: GL leaves such a feedback loop undefined once a program samples it.
 void DeferredRenderer::unbindDeferredTextures() const {
-  for (GLint unit = kFirstGbufferTextureUnit; unit <= kLightBufferTextureUnit; ++unit) {
-    gl_.glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+  for (const shaders::binding::Texture& texture : shaders::kGbufferTextures) {
+    gl_.glActiveTexture(GLenum(GL_TEXTURE0 + texture.glUnit()));
     gl_.glBindTexture(GL_TEXTURE_2D, 0);
   }
+  gl_.glActiveTexture(GLenum(GL_TEXTURE0 + shaders::binding::kLightBuffer.glUnit()));
+  gl_.glBindTexture(GL_TEXTURE_2D, 0);
   gl_.glActiveTexture(GL_TEXTURE0);
 }
 

@@ -15,12 +15,12 @@ GLuint ForwardPrograms::program(const shaders::ConstantValues& constants) {
 }
 
 void bindSceneObjectInterface(const GlFunctions& gl, GLuint program) {
-  bindUniformBlock(gl, program, "FrameBlock", kFrameBlockBinding);
-  bindUniformBlock(gl, program, "ObjectBlock", kObjectBlockBinding);
+  bindUniformBlock(gl, program, shaders::binding::kFrameBlock);
+  bindUniformBlock(gl, program, shaders::binding::kObjectBlock);
   // The samplers get their units once, with the program current.
   gl.glUseProgram(program);
-  bindSampler(gl, program, "lightmapTexture", kLightmapTextureUnit);
-  bindSampler(gl, program, "shadowMaskTexture", kShadowMaskTextureUnit);
+  bindSamplers(gl, program, shaders::binding::kLightmapTexture);
+  bindSamplers(gl, program, shaders::binding::kShadowMaskTexture);
   bindCookieInterface(gl, program);
   bindShadowInterface(gl, program);
 }

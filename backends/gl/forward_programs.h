@@ -1,10 +1,10 @@
 // The forward program for OpenGL (program_builder.h makes it from the GLSL
 // 330 of the Vulkan SPIR-V). One program per set of constants, linked on
-// first use; the uniform blocks are bound by name to the bindings the Vulkan
-// layout uses (0 frame, 1 object), and the baked maps' samplers to texture
-// units 0 (lightmap) and 1 (mask); the cookies' and shadow maps' blocks and
-// samplers as cookie_textures.h and shadow_maps.h give them, the clustered
-// mode's lists as cluster_lists.h does.
+// first use; the uniform blocks (frame, object) and the baked maps' samplers
+// are bound by name to the binding points and texture units of
+// shaders/shader_interface.def, the cookies' and shadow maps' as
+// cookie_textures.h and shadow_maps.h bind them, the clustered mode's lists
+// as cluster_lists.h does.
 #pragma once
 
 #include "backends/gl/gl_objects.h"
@@ -14,14 +14,9 @@
 
 namespace backends::gl {
 
-constexpr GLuint kFrameBlockBinding = 0;
-constexpr GLuint kObjectBlockBinding = 1;
-constexpr GLint kLightmapTextureUnit = 0;
-constexpr GLint kShadowMaskTextureUnit = 1;
-
 // The uniform blocks and samplers of every program that draws the scene's
 // objects through forward.vert (the forward program, the deferred G-buffer
-// program): bound to the bindings and units above. Leaves `program` current.
+// program). Leaves `program` current.
 void bindSceneObjectInterface(const GlFunctions& gl, GLuint program);
 
 class ForwardPrograms {

@@ -63,14 +63,16 @@ GlName linkProgram(const GlFunctions& gl, std::string_view vertexSource, std::st
   return program;
 }
 
-void bindUniformBlock(const GlFunctions& gl, GLuint program, const char* name, GLuint binding) {
-  const GLuint index = gl.glGetUniformBlockIndex(program, name);
-  if (index != GL_INVALID_INDEX) gl.glUniformBlockBinding(program, index, binding);
+void bindUniformBlock(const GlFunctions& gl, GLuint program, const shaders::binding::UniformBlock& block) {
+  const GLuint index = gl.glGetUniformBlockIndex(program, block.name);
+  if (index != GL_INVALID_INDEX) gl.glUniformBlockBinding(program, index, block.glBinding);
 }
 
-void bindSampler(const GlFunctions& gl, GLuint program, const char* name, GLint unit) {
-  const GLint location = gl.glGetUniformLocation(program, name);
-  if (location != -1) gl.glUniform1i(location, unit);
+void bindSamplers(const GlFunctions& gl, GLuint program, const shaders::binding::Texture& texture) {
+  for (std::size_t i = 0; i < texture.count(); ++i) {
+    const GLint location = gl.glGetUniformLocation(program, texture.name(i));
+    if (location != -1) gl.glUniform1i(location, texture.glUnit(i));
+  }
 }
 
 }  // namespace backends::gl

@@ -3,7 +3,7 @@
 // programs. Each specialization constant is defined as the
 // SPIRV_CROSS_CONSTANT_ID_n macro it became. GLSL 330 has no binding
 // qualifiers, so uniform blocks and samplers are bound by name here, to the
-// bindings and texture units the Vulkan layout uses.
+// binding points and texture units of shaders/shader_interface.def.
 #pragma once
 
 #include "backends/gl/gl_objects.h"
@@ -19,12 +19,13 @@ namespace backends::gl {
 GlName linkProgram(const GlFunctions& gl, std::string_view vertexSource, std::string_view fragmentSource,
                    const shaders::ConstantValues& constants, const std::string& what);
 
-// Binds the uniform block `name` to `binding`; a block the specialised
-// program does not use has no index, and is skipped.
-void bindUniformBlock(const GlFunctions& gl, GLuint program, const char* name, GLuint binding);
+// Binds the uniform block to its binding point (shaders/shader_interface.def);
+// a block the specialised program does not use has no index, and is skipped.
+void bindUniformBlock(const GlFunctions& gl, GLuint program, const shaders::binding::UniformBlock& block);
 
-// Points the sampler `name` at texture unit `unit`; needs `program` current.
-// A sampler the specialised program does not use has location -1: skipped.
-void bindSampler(const GlFunctions& gl, GLuint program, const char* name, GLint unit);
+// Points each sampler of `texture` at its texture unit (shaders/shader_interface.def);
+// needs `program` current. A sampler the specialised program does not use
+// has location -1: skipped.
+void bindSamplers(const GlFunctions& gl, GLuint program, const shaders::binding::Texture& texture);
 
 }  // namespace backends::gl

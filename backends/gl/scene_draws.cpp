@@ -16,7 +16,7 @@ void SceneDraws::update(const lighting::Frame& frame) {
 }
 
 void SceneDraws::bindFrameBlock() const {
-  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.get(), 0,
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kFrameBlock.glBinding, frameUniforms_.get(), 0,
                         sizeof(lighting::GpuFrameBlock));
 }
 
@@ -30,8 +30,8 @@ void SceneDraws::draw(const BakedTextures* baked) const {
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const ObjectRange& range = objects_[o];
     if (range.indexCount == 0) continue;
-    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kObjectBlockBinding, objectUniforms_.get(), GLintptr(o * objectStride_),
-                          sizeof(lighting::GpuObjectBlock));
+    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kObjectBlock.glBinding, objectUniforms_.get(),
+                          GLintptr(o * objectStride_), sizeof(lighting::GpuObjectBlock));
     if (baked) baked->bind(int(o));
     const auto firstIndex = reinterpret_cast<const void*>(std::uintptr_t(range.firstIndex) * sizeof(std::uint32_t));
     gl_.glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(range.indexCount), GL_UNSIGNED_INT, firstIndex,

@@ -21,7 +21,7 @@ class SceneDraws {
 
   // Uploads the geometry when the scene changed, and the frame's uniforms.
   void update(const lighting::Frame& frame);
-  // Binds the frame block to kFrameBlockBinding (forward_programs.h).
+  // Binds the frame block to its binding point (shaders/shader_interface.def).
   void bindFrameBlock() const;
   // Draws every object with the current program and framebuffer state.
   void drawObjects(const BakedTextures& baked) const;

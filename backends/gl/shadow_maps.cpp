@@ -13,36 +13,33 @@
 namespace backends::gl {
 namespace {
 
-const char* const kMapSamplers[lighting::kMaxShadowMaps] = {"shadowMap0", "shadowMap1", "shadowMap2",
-                                                             "shadowMap3"};
-const char* const kCubeSamplers[lighting::kMaxShadowCubes] = {"shadowCube0", "shadowCube1"};
-
 // As gl_backend.cpp's draw timer: the two clocks' rounding.
 constexpr double kTimerSlackMilliseconds = 0.1;
 
-// The ShadowPassBlock: one mat4, std140.
-constexpr std::size_t kPassBlockSize = sizeof(lighting::GpuMat4);
+constexpr std::size_t kPassBlockSize = sizeof(lighting::GpuShadowPassBlock);
 
 bool isCubeSlot(int slot) { return slot >= lighting::kMaxShadowMaps; }
 
 }  // namespace
 
+static_assert(shaders::binding::kShadowMap.count() == lighting::kMaxShadowMaps);
+static_assert(shaders::binding::kShadowCube.count() == lighting::kMaxShadowCubes);
+
 void bindShadowInterface(const GlFunctions& gl, GLuint program) {
-  bindUniformBlock(gl, program, "ShadowBlock", kShadowBlockBinding);
-  for (int s = 0; s < lighting::kMaxShadowMaps; ++s) bindSampler(gl, program, kMapSamplers[s], kFirstShadowMapUnit + s);
-  for (int s = 0; s < lighting::kMaxShadowCubes; ++s)
-    bindSampler(gl, program, kCubeSamplers[s], kFirstShadowCubeUnit + s);
+  bindUniformBlock(gl, program, shaders::binding::kShadowBlock);
+  bindSamplers(gl, program, shaders::binding::kShadowMap);
+  bindSamplers(gl, program, shaders::binding::kShadowCube);
 }
 
 ShadowMaps::ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant)
     : gl_(gl), compareFunc_(GLint(toGl(shaders::shadowLookupCompare(mutant)))) {
-  // GL 3.3 promises 48 combined units; the units above end at 20.
+  // GL 3.3 promises 48 combined units; shaders/shader_interface.def's are fewer.
   GLint units = 0;
   gl_.glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
-  if (units < kShadowUnitsEnd)
+  if (units < shaders::binding::kGlTextureUnitCount)
     throw NotSupportedError("the GL driver has " + std::to_string(units) +
-                            " texture units (GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS); the shadow maps use units up to " +
-                            std::to_string(kShadowUnitsEnd - 1));
+                            " texture units (GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS); the shaders use units up to " +
+                            std::to_string(shaders::binding::kGlTextureUnitCount - 1));
   gl_.glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize_);
   gl_.glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &maxCubeSize_);
   block_ = makeBuffer(gl_);
@@ -75,7 +72,7 @@ void ShadowMaps::update(const lighting::Frame& frame) {
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, block_.get());
   gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
-  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kShadowBlockBinding, block_.get(), 0, sizeof(block));
+  gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kShadowBlock.glBinding, block_.get(), 0, sizeof(block));
   bindTextures(false);
   gl_.check("preparing the shadow maps");
 }
@@ -87,8 +84,10 @@ void ShadowMaps::render(const lighting::Frame& frame, const shaders::ConstantVal
   if (views_.empty()) return;
   const GLuint program = casterProgram(constants);
   std::vector<unsigned char> blocks(views_.size() * passStride_);
-  for (std::size_t v = 0; v < views_.size(); ++v)
-    std::memcpy(&blocks[v * passStride_], &views_[v].clipFromCameraRelative, kPassBlockSize);
+  for (std::size_t v = 0; v < views_.size(); ++v) {
+    const lighting::GpuShadowPassBlock block{views_[v].clipFromCameraRelative};
+    std::memcpy(&blocks[v * passStride_], &block, kPassBlockSize);
+  }
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, passBlocks_.get());
   gl_.glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(blocks.size()), blocks.data(), GL_DYNAMIC_DRAW);
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, 0);
@@ -135,8 +134,8 @@ void ShadowMaps::drawViews(const SceneDraws& scene) {
       gl_.glBeginQuery(GL_TIME_ELAPSED, timer_.get());
       timing_ = true;
     }
-    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, kShadowPassBlockBinding, passBlocks_.get(), GLintptr(v * passStride_),
-                          kPassBlockSize);
+    gl_.glBindBufferRange(GL_UNIFORM_BUFFER, shaders::binding::kShadowPassBlock.glBinding, passBlocks_.get(),
+                          GLintptr(v * passStride_), kPassBlockSize);
     scene.drawGeometry();
   }
 }
@@ -181,8 +180,8 @@ GLuint ShadowMaps::casterProgram(const shaders::ConstantValues& constants) {
   if (found == casters_.end()) {
     GlName program = linkProgram(gl_, shaders::shadowCasterVertexGlsl330(), shaders::shadowCasterFragmentGlsl330(),
                                  constants, "the shadow-caster program");
-    bindUniformBlock(gl_, program.get(), "ShadowPassBlock", kShadowPassBlockBinding);
-    bindUniformBlock(gl_, program.get(), "ObjectBlock", kObjectBlockBinding);
+    bindUniformBlock(gl_, program.get(), shaders::binding::kShadowPassBlock);
+    bindUniformBlock(gl_, program.get(), shaders::binding::kObjectBlock);
     gl_.check("linking the shadow-caster program");
     found = casters_.emplace(constants, std::move(program)).first;
   }
@@ -231,11 +230,11 @@ void ShadowMaps::bindTextures(bool none) const {
   // Every unit gets its slot's texture or none: a slot the frame does not
   // use is never sampled (its kind in the block is None).
   for (int s = 0; s < lighting::kMaxShadowMaps; ++s) {
-    gl_.glActiveTexture(GL_TEXTURE0 + kFirstShadowMapUnit + s);
+    gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kShadowMap.glUnit(s));
     gl_.glBindTexture(GL_TEXTURE_2D, !none && s < usedMaps_ ? maps_[s].texture.get() : 0);
   }
   for (int s = 0; s < lighting::kMaxShadowCubes; ++s) {
-    gl_.glActiveTexture(GL_TEXTURE0 + kFirstShadowCubeUnit + s);
+    gl_.glActiveTexture(GL_TEXTURE0 + shaders::binding::kShadowCube.glUnit(s));
     gl_.glBindTexture(GL_TEXTURE_CUBE_MAP, !none && s < usedCubes_ ? cubes_[s].texture.get() : 0);
   }
   gl_.glActiveTexture(GL_TEXTURE0);

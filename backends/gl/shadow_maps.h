@@ -6,8 +6,9 @@
 // nearest filtering for `hard` and linear for `bilinear` and `tent3x3`.
 // Every frame writes the lighting::GpuShadowBlock, renders one depth-only
 // pass per lighting::ShadowPassView (every object, no culling, no depth
-// bias: lighting::kShadowCasterState) and binds the slots' textures to the
-// units below, the same units for every program that lights.
+// bias: lighting::kShadowCasterState) and binds the slots' textures to their
+// units, the same units for every program that lights. The depth-only pass's
+// ShadowPassBlock is only the shadow-caster program's.
 #pragma once
 
 #include "backends/gl/cookie_textures.h"
@@ -26,26 +27,18 @@
 
 namespace backends::gl {
 
-constexpr GLuint kShadowBlockBinding = 5;
-// The depth-only pass's ShadowPassBlock; only the shadow-caster program has it.
-constexpr GLuint kShadowPassBlockBinding = 6;
-// Units after the cookies' (8-13): the 2D slots, then the cube slots. Every
-// shadow sampler has its own unit, also in a scene without shadows: the full
-// shader declares all six, and GL refuses a draw where a sampler2DShadow and
-// a samplerCubeShadow (or a cookie's sampler) share one.
-constexpr GLint kFirstShadowMapUnit = kFirstCookieCubeUnit + lighting::kMaxCookieCubes;
-constexpr GLint kFirstShadowCubeUnit = kFirstShadowMapUnit + lighting::kMaxShadowMaps;
-constexpr GLint kShadowUnitsEnd = kFirstShadowCubeUnit + lighting::kMaxShadowCubes;
-
-// Points `program`'s ShadowBlock and shadow samplers at the binding and
-// units above; needs `program` current. What a specialised program does not
-// use is skipped.
+// Points `program`'s ShadowBlock and shadow samplers at their binding point
+// and units (shaders/shader_interface.def: the 2D slots, then the cube
+// slots); needs `program` current. What a specialised program does not use
+// is skipped. Every shadow sampler has its own unit, also in a scene without
+// shadows: the full shader declares all six, and GL refuses a draw where a
+// sampler2DShadow and a samplerCubeShadow (or a cookie's sampler) share one.
 void bindShadowInterface(const GlFunctions& gl, GLuint program);
 
 class ShadowMaps {
  public:
   // Throws NotSupportedError when the context has too few texture units for
-  // the units above. Needs the backend's context current.
+  // those of shaders/shader_interface.def. Needs the backend's context current.
   ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant);
 
   // Links the shadow-caster program for `constants` unless it is linked

@@ -1,6 +1,7 @@
 #include "backends/vulkan/baked_textures.h"
 
 #include "backends/vulkan/texture_upload.h"
+#include "shaders/shader_interface.h"  // generated from shaders/shader_interface.def
 
 #include <array>
 #include <chrono>
@@ -11,7 +12,8 @@ namespace {
 
 constexpr std::array<float, 4> kNoLightmapTexel{0.0f, 0.0f, 0.0f, 1.0f};
 constexpr std::array<float, 4> kNoShadowMaskTexel{1.0f, 1.0f, 1.0f, 1.0f};
-
+// The set's two maps, in writeSet's order.
+constexpr std::array kMaps = {shaders::binding::kLightmapTexture, shaders::binding::kShadowMaskTexture};
 
 struct BoundMap {
   const DeviceImage* image;
@@ -27,7 +29,7 @@ void writeSet(const vk::raii::Device& device, vk::DescriptorSet set, BoundMap li
   }};
   std::array<vk::WriteDescriptorSet, 2> writes;
   for (std::uint32_t b = 0; b < 2; ++b)
-    writes[b] = {.dstSet = set, .dstBinding = b, .descriptorCount = 1,
+    writes[b] = {.dstSet = set, .dstBinding = kMaps[b].binding(), .descriptorCount = 1,
                  .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &images[b]};
   device.updateDescriptorSets(writes, {});
 }
@@ -38,12 +40,10 @@ constexpr std::array<vk::DescriptorPoolSize, 1> kMapsPerSet{{{vk::DescriptorType
 }  // namespace
 
 vk::raii::DescriptorSetLayout createBakedMapsSetLayout(const vk::raii::Device& device) {
-  const std::array<vk::DescriptorSetLayoutBinding, 2> bindings{{
-      {.binding = 0, .descriptorType = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 1,
-       .stageFlags = vk::ShaderStageFlagBits::eFragment},  // lightmapTexture
-      {.binding = 1, .descriptorType = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 1,
-       .stageFlags = vk::ShaderStageFlagBits::eFragment},  // shadowMaskTexture
-  }};
+  std::array<vk::DescriptorSetLayoutBinding, 2> bindings;
+  for (std::uint32_t b = 0; b < 2; ++b)
+    bindings[b] = {.binding = kMaps[b].binding(), .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+                   .descriptorCount = 1, .stageFlags = vk::ShaderStageFlagBits::eFragment};
   return vk::raii::DescriptorSetLayout(
       device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
 }

@@ -1,6 +1,7 @@
 // The baked maps of SPEC 3.6 on the device: descriptor set 1 of the forward
-// pipeline (binding 0: lightmapTexture, binding 1: shadowMaskTexture, both
-// combined image samplers read by the fragment stage).
+// pipeline (lightmapTexture and shadowMaskTexture at their bindings of
+// shaders/shader_interface.def, both combined image samplers read by the
+// fragment stage).
 //
 // The forward shader uses set 1 statically, so every draw binds one: objects
 // with maps get a set of their own pointing at their two RGBA32F images

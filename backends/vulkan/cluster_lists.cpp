@@ -12,7 +12,7 @@
 namespace backends::vulkan {
 
 vk::raii::DescriptorSetLayout ClusterLists::createSetLayout(const vk::raii::Device& device) {
-  const vk::DescriptorSetLayoutBinding binding{.binding = kClusterListsBinding,
+  const vk::DescriptorSetLayoutBinding binding{.binding = shaders::binding::kClusterLists.binding(),
                                                .descriptorType = vk::DescriptorType::eUniformTexelBuffer,
                                                .descriptorCount = 1,
                                                .stageFlags = vk::ShaderStageFlagBits::eFragment};
@@ -47,8 +47,11 @@ void ClusterLists::allocate(vk::DeviceSize texels) {
                                                                         .range = texels * sizeof(std::uint32_t)});
   const vk::BufferView view = *view_;
   device_.device.updateDescriptorSets(
-      {vk::WriteDescriptorSet{.dstSet = set(), .dstBinding = kClusterListsBinding, .descriptorCount = 1,
-                              .descriptorType = vk::DescriptorType::eUniformTexelBuffer, .pTexelBufferView = &view}},
+      {vk::WriteDescriptorSet{.dstSet = set(),
+                              .dstBinding = shaders::binding::kClusterLists.binding(),
+                              .descriptorCount = 1,
+                              .descriptorType = vk::DescriptorType::eUniformTexelBuffer,
+                              .pTexelBufferView = &view}},
       {});
   capacity_ = texels;
 }

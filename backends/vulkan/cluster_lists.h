@@ -10,14 +10,14 @@
 #include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
 #include "lighting/frame.h"
+#include "shaders/shader_interface.h"  // generated from shaders/shader_interface.def
 
 #include <cstdint>
 #include <optional>
 
 namespace backends::vulkan {
 
-constexpr std::uint32_t kClusterListsSetIndex = 2;
-constexpr std::uint32_t kClusterListsBinding = 0;
+constexpr std::uint32_t kClusterListsSetIndex = shaders::binding::kClusterLists.set;
 
 class ClusterLists {
  public:

@@ -14,8 +14,9 @@ namespace {
 
 constexpr std::uint32_t kTextureSlots = lighting::kMaxCookieTextures;
 constexpr std::uint32_t kCubeSlots = lighting::kMaxCookieCubes;
-static_assert(kFirstCookieCubeBinding == kFirstCookieTextureBinding + kTextureSlots);
-constexpr std::uint32_t kBindingCount = kFirstCookieCubeBinding + kCubeSlots;  // the block and the slots
+static_assert(shaders::binding::kCookieTexture.count() == kTextureSlots);
+static_assert(shaders::binding::kCookieCube.count() == kCubeSlots);
+constexpr std::uint32_t kBindingCount = 1 + kTextureSlots + kCubeSlots;  // the block and the slots
 
 constexpr std::array<float, 1> kStandInTexel{1.0f};  // kCookieFormat: the value alone
 
@@ -111,11 +112,15 @@ void CookieTextures::writeSet(const lighting::Frame* frame) {
   }
   const vk::DescriptorBufferInfo blockInfo{*block_.buffer, 0, sizeof(lighting::GpuCookieBlock)};
   std::array<vk::WriteDescriptorSet, kBindingCount> writes;
-  writes[0] = {.dstSet = set_, .dstBinding = kCookieBlockBinding, .descriptorCount = 1,
+  writes[0] = {.dstSet = set_, .dstBinding = shaders::binding::kCookieBlock.binding, .descriptorCount = 1,
                .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &blockInfo};
-  for (std::uint32_t b = 1; b < kBindingCount; ++b)
-    writes[b] = {.dstSet = set_, .dstBinding = kCookieBlockBinding + b, .descriptorCount = 1,
-                 .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &images[b - 1]};
+  for (std::uint32_t s = 0; s < kTextureSlots + kCubeSlots; ++s)
+    writes[1 + s] = {.dstSet = set_,
+                     .dstBinding = s < kTextureSlots ? shaders::binding::kCookieTexture.binding(s)
+                                                     : shaders::binding::kCookieCube.binding(s - kTextureSlots),
+                     .descriptorCount = 1,
+                     .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+                     .pImageInfo = &images[s]};
   device_.device.updateDescriptorSets(writes, {});
 }
 

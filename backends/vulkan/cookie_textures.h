@@ -1,7 +1,7 @@
 // The light cookies of SPEC 3.10 on the device: their bindings of the light
-// texture set (light_texture_set.h, shaders/cookies.glsl): binding 0 the
-// frame's lighting::GpuCookieBlock, bindings 1-4 the 2D slots, 5-6 the cube
-// slots, read by the vertex stage (legacy vertex lights) and the fragment stage.
+// texture set (light_texture_set.h, shaders/cookies.glsl): the frame's
+// lighting::GpuCookieBlock, the 2D slots and the cube slots, read by the
+// vertex stage (legacy vertex lights) and the fragment stage.
 //
 // Every cookie of a prepared scene is uploaded once (R32F, its value,
 // backends/cookie_texels.h); each frame writes its block and points the slots

@@ -6,6 +6,7 @@
 #include "backends/vulkan/scene_uniforms.h"
 #include "lighting/gpu_packing.h"
 #include "shaders/embedded_spirv.h"
+#include "shaders/gbuffer_textures.h"
 
 #include <array>
 #include <vector>
@@ -20,21 +21,27 @@ DeferredPipelines::DeferredPipelines(const VulkanDevice& device, const PipelineC
       lightStages_(device.device, shaders::deferredLightVertexSpirv(), shaders::deferredLightFragmentSpirv()),
       compositeStages_(device.device, shaders::deferredCompositeVertexSpirv(),
                        shaders::deferredCompositeFragmentSpirv()) {
-  // Set 0: the scene's uniforms as forward has them (bindings 0 and 1), the
-  // light block of each light draw (2) and the deferred frame block (3).
+  // Set 0: the scene's uniforms as forward has them, the light block of each
+  // light draw and the deferred frame block. Set 2: the G-buffer and the
+  // light buffer.
   const auto stages = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
   const std::array<vk::DescriptorSetLayoutBinding, 2> scene = SceneUniforms::layoutBindings();
   const std::array<vk::DescriptorSetLayoutBinding, 4> uniforms{{
       scene[0],
       scene[1],
-      {.binding = 2, .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1, .stageFlags = stages},
-      {.binding = 3, .descriptorType = vk::DescriptorType::eUniformBuffer, .descriptorCount = 1, .stageFlags = stages},
+      {.binding = shaders::binding::kDeferredLightBlock.binding,
+       .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1, .stageFlags = stages},
+      {.binding = shaders::binding::kDeferredFrameBlock.binding, .descriptorType = vk::DescriptorType::eUniformBuffer,
+       .descriptorCount = 1, .stageFlags = stages},
   }};
   uniformsSetLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = uniforms.size(), .pBindings = uniforms.data()});
   std::array<vk::DescriptorSetLayoutBinding, kGBufferImageCount + 1> textures;
-  for (std::uint32_t b = 0; b < textures.size(); ++b)
-    textures[b] = {.binding = b, .descriptorType = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 1,
+  for (std::uint32_t t = 0; t < textures.size(); ++t)
+    textures[t] = {.binding = t < kGBufferImageCount ? shaders::kGbufferTextures[t].binding()
+                                                     : shaders::binding::kLightBuffer.binding(),
+                   .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+                   .descriptorCount = 1,
                    .stageFlags = vk::ShaderStageFlagBits::eFragment};
   texturesSetLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = textures.size(), .pBindings = textures.data()});

@@ -1,11 +1,12 @@
 // The pipelines of the deferred path (SPEC 3.7), all with one pipeline
 // layout:
-//   set 0: binding 0 FrameBlock, binding 1 ObjectBlock (dynamic offset, the
-//          G-buffer pass), binding 2 DeferredLightBlock (dynamic offset, one
-//          per light draw), binding 3 DeferredFrameBlock;
+//   set 0: FrameBlock, ObjectBlock (dynamic offset, the G-buffer pass),
+//          DeferredLightBlock (dynamic offset, one per light draw),
+//          DeferredFrameBlock;
 //   set 1: the object's baked maps, the forward pipeline's layout itself
 //          (baked_textures.h), so the same sets bind in both paths;
-//   set 2: the G-buffer images (bindings 0-3) and the light buffer (4).
+//   set 2: the G-buffer images and the light buffer;
+// each at its binding of shaders/shader_interface.def.
 // Each pass binds only the sets its shaders read.
 //
 // G-buffer pass: forward.vert + gbuffer.frag, four RGBA32F colour outputs and

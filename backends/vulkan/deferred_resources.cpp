@@ -1,6 +1,7 @@
 #include "backends/vulkan/deferred_resources.h"
 
 #include "backends/aligned_stride.h"
+#include "shaders/gbuffer_textures.h"
 
 #include <algorithm>
 #include <array>
@@ -24,10 +25,10 @@ DeferredUniforms::DeferredUniforms(const VulkanDevice& device, const vk::raii::D
   const std::array<vk::WriteDescriptorSet, 4> writes{{
       sceneWrites[0],
       sceneWrites[1],
-      {.dstSet = set, .dstBinding = 2, .descriptorCount = 1,
+      {.dstSet = set, .dstBinding = shaders::binding::kDeferredLightBlock.binding, .descriptorCount = 1,
        .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &lightInfo},
-      {.dstSet = set, .dstBinding = 3, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
-       .pBufferInfo = &deferredFrameInfo},
+      {.dstSet = set, .dstBinding = shaders::binding::kDeferredFrameBlock.binding, .descriptorCount = 1,
+       .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &deferredFrameInfo},
   }};
   device.device.updateDescriptorSets(writes, {});
 }
@@ -79,8 +80,13 @@ GBufferTextureSets::GBufferTextureSets(const VulkanDevice& device, const vk::rai
   infos[1][kGBufferImageCount] = info(targets.lightBuffer);
   std::vector<vk::WriteDescriptorSet> writes;
   for (std::size_t s = 0; s < 2; ++s)
-    writes.push_back({.dstSet = *sets_.sets[s], .dstBinding = 0, .descriptorCount = kBindings,
-                      .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = infos[s].data()});
+    for (std::size_t t = 0; t < kBindings; ++t)
+      writes.push_back({.dstSet = *sets_.sets[s],
+                        .dstBinding = t < kGBufferImageCount ? shaders::kGbufferTextures[t].binding()
+                                                             : shaders::binding::kLightBuffer.binding(),
+                        .descriptorCount = 1,
+                        .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+                        .pImageInfo = &infos[s][t]});
   device.device.updateDescriptorSets(writes, {});
 }
 

@@ -6,7 +6,7 @@
 //   LightVolumeVertices: every light volume of the frame in one host-visible
 //     vertex buffer, written each frame (the volumes follow the camera);
 //   GBufferTextureSets: set 2, once for the light pass and once for the
-//     composite pass (only the composite's points binding 4 at the light
+//     composite pass (only the composite's points lightBuffer at the light
 //     buffer: during the light pass that image is the attachment).
 // The first two grow (are rebuilt) only when a frame needs more than they
 // hold; the sets are rebuilt with the targets they point at.
@@ -44,7 +44,7 @@ class DeferredUniforms {
   }
 
  private:
-  SceneUniforms scene_;  // bindings 0 and 1, as in the forward pass
+  SceneUniforms scene_;  // the frame and object blocks, as in the forward pass
   std::size_t lightCapacity_;
   vk::DeviceSize lightStride_;
   HostBuffer lights_;

@@ -18,8 +18,8 @@ struct RenderTarget {
   HostBuffer staging;  // the readback lands here, RGBA32F rows, row 0 at the top
 };
 
-// Set 0 of the forward pipeline (forward_pipeline.h): bindings 0 and 1 at the
-// scene's uniforms.
+// Set 0 of the forward pipeline (forward_pipeline.h): the frame and object
+// blocks' bindings at the scene's uniforms.
 class ForwardUniforms {
  public:
   ForwardUniforms(const VulkanDevice& device, const vk::raii::DescriptorSetLayout& layout, std::size_t objectCapacity);

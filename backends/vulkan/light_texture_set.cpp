@@ -1,30 +1,47 @@
 #include "backends/vulkan/light_texture_set.h"
 
-#include <array>
+#include <vector>
 
 namespace backends::vulkan {
 
 namespace {
-bool isBlock(std::uint32_t binding) { return binding == kCookieBlockBinding || binding == kShadowBlockBinding; }
+
+constexpr std::uint32_t samplerCount() {
+  std::uint32_t count = 0;
+  for (const shaders::binding::Texture& texture : kLightTextures) count += std::uint32_t(texture.count());
+  return count;
+}
+
+constexpr bool allInTheSet() {
+  for (const shaders::binding::UniformBlock& block : kLightTextureBlocks)
+    if (block.set != kLightTextureSetIndex) return false;
+  for (const shaders::binding::Texture& texture : kLightTextures)
+    if (texture.set != kLightTextureSetIndex) return false;
+  return true;
+}
+static_assert(allInTheSet());
+
 }  // namespace
 
 vk::raii::DescriptorSetLayout createLightTextureSetLayout(const vk::raii::Device& device) {
   const auto stages = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
-  std::array<vk::DescriptorSetLayoutBinding, kLightTextureBindingCount> bindings;
-  for (std::uint32_t b = 0; b < kLightTextureBindingCount; ++b)
-    bindings[b] = {.binding = b,
-                   .descriptorType = isBlock(b) ? vk::DescriptorType::eUniformBuffer
-                                                : vk::DescriptorType::eCombinedImageSampler,
-                   .descriptorCount = 1,
-                   .stageFlags = stages};
+  std::vector<vk::DescriptorSetLayoutBinding> bindings;
+  for (const shaders::binding::UniformBlock& block : kLightTextureBlocks)
+    bindings.push_back({.binding = block.binding, .descriptorType = vk::DescriptorType::eUniformBuffer,
+                        .descriptorCount = 1, .stageFlags = stages});
+  for (const shaders::binding::Texture& texture : kLightTextures)
+    for (std::size_t i = 0; i < texture.count(); ++i)
+      bindings.push_back({.binding = texture.binding(i), .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+                          .descriptorCount = 1, .stageFlags = stages});
   return vk::raii::DescriptorSetLayout(
-      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
+      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = std::uint32_t(bindings.size()),
+                                                .pBindings = bindings.data()});
 }
 
 LightTextureSet::LightTextureSet(const vk::raii::Device& device, const vk::raii::DescriptorSetLayout& layout) {
   const std::array<vk::DescriptorPoolSize, 2> perSet{
-      {{vk::DescriptorType::eUniformBuffer, 2},
-       {vk::DescriptorType::eCombinedImageSampler, kLightTextureBindingCount - 2}}};
+      {{vk::DescriptorType::eUniformBuffer, std::uint32_t(kLightTextureBlocks.size())},
+       {vk::DescriptorType::eCombinedImageSampler, samplerCount()}}};
   sets_ = DescriptorSets(device, layout, perSet, 1);
 }
 

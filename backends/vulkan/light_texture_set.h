@@ -1,28 +1,24 @@
 // Descriptor set 3 of every pipeline that lights: the per-light textures,
 // read by the vertex stage (legacy vertex lights: cookies) and the fragment
-// stage. Bindings 0-6 are the cookies' (cookie_textures.h,
-// shaders/cookies.glsl), 7-13 the real-time shadow maps' (shadow_maps.h,
-// shaders/shadows.glsl). One set, written by both owners; each writes only
-// its own bindings, both before the first draw.
+// stage: the cookies' block and slots (cookie_textures.h, shaders/cookies.glsl)
+// and the real-time shadow maps' (shadow_maps.h, shaders/shadows.glsl), at
+// the bindings of shaders/shader_interface.def. One set, written by both
+// owners; each writes only its own bindings, both before the first draw.
 #pragma once
 
 #include "backends/vulkan/descriptor_sets.h"
+#include "shaders/shader_interface.h"  // generated from shaders/shader_interface.def
 
+#include <array>
 #include <cstdint>
 
 namespace backends::vulkan {
 
-constexpr std::uint32_t kLightTextureSetIndex = 3;
-
-// Cookies: block, four 2D slots, two cube slots.
-constexpr std::uint32_t kCookieBlockBinding = 0;
-constexpr std::uint32_t kFirstCookieTextureBinding = 1;
-constexpr std::uint32_t kFirstCookieCubeBinding = 5;
-// Shadow maps: block, four 2D slots, two cube slots.
-constexpr std::uint32_t kShadowBlockBinding = 7;
-constexpr std::uint32_t kFirstShadowMapBinding = 8;
-constexpr std::uint32_t kFirstShadowCubeBinding = 12;
-constexpr std::uint32_t kLightTextureBindingCount = 14;
+// What the set holds: the blocks, then the textures.
+inline constexpr std::array kLightTextureBlocks = {shaders::binding::kCookieBlock, shaders::binding::kShadowBlock};
+inline constexpr std::array kLightTextures = {shaders::binding::kCookieTexture, shaders::binding::kCookieCube,
+                                              shaders::binding::kShadowMap, shaders::binding::kShadowCube};
+constexpr std::uint32_t kLightTextureSetIndex = shaders::binding::kCookieBlock.set;
 
 vk::raii::DescriptorSetLayout createLightTextureSetLayout(const vk::raii::Device& device);
 

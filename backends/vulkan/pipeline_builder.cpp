@@ -9,8 +9,8 @@
 namespace backends::vulkan {
 namespace {
 
-// Every specialization constant of features.glsl at its id; a stage ignores
-// the ids it does not declare.
+// Every specialization constant (shaders/shader_interface.def) at its id; a
+// stage ignores the ids it does not declare.
 struct Specialization {
   explicit Specialization(const shaders::ConstantValues& constants) {
     for (std::uint32_t id = 0; id < shaders::kConstantCount; ++id)

@@ -1,10 +1,10 @@
 // Builds the graphics pipelines of every pass (forward, G-buffer, light,
 // composite; a shadow-map pass would be one more buildSceneObjects call with
 // no colour format) the same way: two stages specialised with every constant
-// of features.glsl, a triangle list, dynamic viewport and scissor, one
-// sample, dynamic rendering, through the on-disk pipeline cache. What differs
-// between passes is the PassPipelineState; its raster state is the model's
-// (lighting/raster_state.h), translated by raster_translation.h.
+// of shaders/shader_interface.def, a triangle list, dynamic viewport and
+// scissor, one sample, dynamic rendering, through the on-disk pipeline cache.
+// What differs between passes is the PassPipelineState; its raster state is
+// the model's (lighting/raster_state.h), translated by raster_translation.h.
 #pragma once
 
 #include "backends/vulkan/pipeline_cache_file.h"

@@ -10,9 +10,10 @@ namespace backends::vulkan {
 std::array<vk::DescriptorSetLayoutBinding, 2> SceneUniforms::layoutBindings() {
   const auto stages = vk::ShaderStageFlagBits::eVertex | vk::ShaderStageFlagBits::eFragment;
   return {{
-      {.binding = 0, .descriptorType = vk::DescriptorType::eUniformBuffer, .descriptorCount = 1, .stageFlags = stages},
-      {.binding = 1, .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1,
-       .stageFlags = stages},
+      {.binding = shaders::binding::kFrameBlock.binding, .descriptorType = vk::DescriptorType::eUniformBuffer,
+       .descriptorCount = 1, .stageFlags = stages},
+      {.binding = shaders::binding::kObjectBlock.binding, .descriptorType = vk::DescriptorType::eUniformBufferDynamic,
+       .descriptorCount = 1, .stageFlags = stages},
   }};
 }
 
@@ -35,9 +36,9 @@ void SceneUniforms::write(const lighting::Frame& frame) {
 
 std::array<vk::WriteDescriptorSet, 2> SceneUniforms::descriptorWrites(vk::DescriptorSet set) const {
   return {{
-      {.dstSet = set, .dstBinding = 0, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eUniformBuffer,
-       .pBufferInfo = &frameInfo_},
-      {.dstSet = set, .dstBinding = 1, .descriptorCount = 1,
+      {.dstSet = set, .dstBinding = shaders::binding::kFrameBlock.binding, .descriptorCount = 1,
+       .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &frameInfo_},
+      {.dstSet = set, .dstBinding = shaders::binding::kObjectBlock.binding, .descriptorCount = 1,
        .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &objectInfo_},
   }};
 }

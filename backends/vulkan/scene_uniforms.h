@@ -2,13 +2,14 @@
 // block and one object block per object, at the device's dynamic-offset
 // alignment, in host-visible buffers. The forward pass (ForwardUniforms,
 // frame_resources.h) and the deferred passes (DeferredUniforms,
-// deferred_resources.h) each own one and point bindings 0 and 1 of their set
-// 0 at it; they add only what their passes read besides.
+// deferred_resources.h) each own one and point the FrameBlock and ObjectBlock
+// bindings of their set 0 at it; they add only what their passes read besides.
 #pragma once
 
 #include "backends/vulkan/gpu_memory.h"
 #include "lighting/frame.h"
 #include "lighting/gpu_packing.h"
+#include "shaders/shader_interface.h"  // generated from shaders/shader_interface.def
 
 #include <array>
 #include <cstdint>
@@ -17,7 +18,8 @@ namespace backends::vulkan {
 
 class SceneUniforms {
  public:
-  // Bindings 0 and 1 of a set 0 layout that holds these uniforms.
+  // The FrameBlock and ObjectBlock bindings (shaders/shader_interface.def) of
+  // a set 0 layout that holds these uniforms.
   static std::array<vk::DescriptorSetLayoutBinding, 2> layoutBindings();
 
   SceneUniforms(const VulkanDevice& device, std::size_t objectCapacity);
@@ -27,8 +29,8 @@ class SceneUniforms {
   std::uint32_t objectOffset(std::size_t object) const { return std::uint32_t(object * objectStride_); }
   // The frame block and every object's block of `frame` (lighting/gpu_packing.h).
   void write(const lighting::Frame& frame);
-  // Binding 0 (the frame block) and binding 1 (the object block, dynamic
-  // offset) of `set`, for updateDescriptorSets while this lives.
+  // The frame block's and the object block's (dynamic offset) bindings of
+  // `set`, for updateDescriptorSets while this lives.
   std::array<vk::WriteDescriptorSet, 2> descriptorWrites(vk::DescriptorSet set) const;
 
  private:

@@ -65,7 +65,7 @@ ShadowMaps::ShadowMaps(const VulkanDevice& device, const PipelineCacheFile& cach
       block_(device, sizeof(lighting::GpuShadowBlock), vk::BufferUsageFlagBits::eUniformBuffer),
       set_(set),
       stages_(device.device, shaders::shadowCasterVertexSpirv(), shaders::shadowCasterFragmentSpirv()),
-      viewStride_(alignedStride(sizeof(lighting::GpuMat4), device.limits.minUniformBufferOffsetAlignment)),
+      viewStride_(alignedStride(sizeof(lighting::GpuShadowPassBlock), device.limits.minUniformBufferOffsetAlignment)),
       viewBlocks_(device, viewStride_ * kMostViews, vk::BufferUsageFlagBits::eUniformBuffer) {
   // SPEC 3.9's compare, decided beside the raster state (lighting/raster_state.h).
   const vk::CompareOp compare = toVulkan(shaders::shadowLookupCompare(mutant));
@@ -83,11 +83,12 @@ ShadowMaps::ShadowMaps(const VulkanDevice& device, const PipelineCacheFile& cach
   for (int s = 0; s < lighting::kGpuShadowSlots; ++s) ensureSlot(slots_[s], 1, s >= k2dSlots);
 
   const auto vertex = vk::ShaderStageFlagBits::eVertex;
+  static_assert(shaders::binding::kShadowPassBlock.set == 0 && shaders::binding::kObjectBlock.set == 0);
   const std::array<vk::DescriptorSetLayoutBinding, 2> bindings{{
-      {.binding = 0, .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1,
-       .stageFlags = vertex},
-      {.binding = 1, .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1,
-       .stageFlags = vertex},
+      {.binding = shaders::binding::kShadowPassBlock.binding,
+       .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1, .stageFlags = vertex},
+      {.binding = shaders::binding::kObjectBlock.binding, .descriptorType = vk::DescriptorType::eUniformBufferDynamic,
+       .descriptorCount = 1, .stageFlags = vertex},
   }};
   passSetLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});
@@ -151,16 +152,18 @@ void ShadowMaps::update(const lighting::Frame& frame) {
     ensureSlot(slots_[s], used ? list[index].spec.resolution : 1, cube);
   }
   views_ = lighting::shadowPassViews(frame);
-  for (std::size_t v = 0; v < views_.size(); ++v)
-    viewBlocks_.write(std::span<const lighting::GpuMat4>(&views_[v].clipFromCameraRelative, 1), v * viewStride_);
+  for (std::size_t v = 0; v < views_.size(); ++v) {
+    const lighting::GpuShadowPassBlock block{views_[v].clipFromCameraRelative};
+    viewBlocks_.write(std::span(&block, 1), v * viewStride_);
+  }
   const std::size_t objectCount = frame.scene().objects.size();
   if (!objects_ || objects_->objectCapacity() < objectCount) {
     objects_.reset();
     objects_.emplace(device_, objectCount);
-    const vk::DescriptorBufferInfo viewInfo{*viewBlocks_.buffer, 0, sizeof(lighting::GpuMat4)};
+    const vk::DescriptorBufferInfo viewInfo{*viewBlocks_.buffer, 0, sizeof(lighting::GpuShadowPassBlock)};
     const vk::DescriptorSet passSet = *passSets_.sets.front();
     const std::array<vk::WriteDescriptorSet, 2> writes{
-        {{.dstSet = passSet, .dstBinding = 0, .descriptorCount = 1,
+        {{.dstSet = passSet, .dstBinding = shaders::binding::kShadowPassBlock.binding, .descriptorCount = 1,
           .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .pBufferInfo = &viewInfo},
          objects_->descriptorWrites(passSet)[1]}};
     device_.device.updateDescriptorSets(writes, {});
@@ -184,11 +187,15 @@ void ShadowMaps::writeSet(const lighting::Frame* frame) {
   }
   const vk::DescriptorBufferInfo blockInfo{*block_.buffer, 0, sizeof(lighting::GpuShadowBlock)};
   std::array<vk::WriteDescriptorSet, 1 + lighting::kGpuShadowSlots> writes;
-  writes[0] = {.dstSet = set_, .dstBinding = kShadowBlockBinding, .descriptorCount = 1,
+  writes[0] = {.dstSet = set_, .dstBinding = shaders::binding::kShadowBlock.binding, .descriptorCount = 1,
                .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &blockInfo};
-  static_assert(kFirstShadowCubeBinding == kFirstShadowMapBinding + k2dSlots);
+  static_assert(shaders::binding::kShadowMap.count() == k2dSlots);
+  static_assert(shaders::binding::kShadowCube.count() == lighting::kMaxShadowCubes);
   for (int s = 0; s < lighting::kGpuShadowSlots; ++s)
-    writes[1 + s] = {.dstSet = set_, .dstBinding = kFirstShadowMapBinding + std::uint32_t(s), .descriptorCount = 1,
+    writes[1 + s] = {.dstSet = set_,
+                     .dstBinding = s < k2dSlots ? shaders::binding::kShadowMap.binding(s)
+                                                : shaders::binding::kShadowCube.binding(s - k2dSlots),
+                     .descriptorCount = 1,
                      .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &images[s]};
   device_.device.updateDescriptorSets(writes, {});
 }

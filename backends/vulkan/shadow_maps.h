@@ -1,7 +1,7 @@
 // The real-time shadow maps of SPEC 3.9 on the device: their bindings of the
-// light texture set (light_texture_set.h, shaders/shadows.glsl: binding 7
-// the frame's lighting::GpuShadowBlock, 8-11 the 2D slots, 12-13 the cube
-// slots) and the depth-only passes that fill them.
+// light texture set (light_texture_set.h, shaders/shadows.glsl: the frame's
+// lighting::GpuShadowBlock, the 2D slots and the cube slots) and the
+// depth-only passes that fill them.
 //
 // Each slot has a D32_SFLOAT depth image of its light's resolution (a cube
 // for a point light), kept while the resolution stays. Every draw records
@@ -70,8 +70,8 @@ class ShadowMaps {
   std::array<SlotImage, lighting::kGpuShadowSlots> slots_;
   HostBuffer block_;
   vk::DescriptorSet set_;
-  // The depth passes: their own set 0 (binding 0 the view's transform,
-  // binding 1 the object's block, both dynamic) and pipeline.
+  // The depth passes: their own set 0 (ShadowPassBlock, the view's
+  // transform, and ObjectBlock, both dynamic) and pipeline.
   vk::raii::DescriptorSetLayout passSetLayout_{nullptr};
   vk::raii::PipelineLayout passLayout_{nullptr};
   ShaderStages stages_;

@@ -27,7 +27,8 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK}" --target lightcts_s
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "building lightcts_shader_code with Unix Makefiles failed (${status}):\n${output}")
 endif()
-foreach(generated spirv/forward_vert.h spirv/forward_vert.spv glsl330/forward_vert.h)
+foreach(generated spirv/forward_vert.h spirv/forward_vert.spv glsl330/forward_vert.h
+                  reflection/forward_vert.json layout/shader_layout_assertions.h)
   if(NOT EXISTS "${WORK}/shaders/${generated}")
     message(FATAL_ERROR "the Makefiles build did not write shaders/${generated}")
   endif()

@@ -104,5 +104,12 @@ TEST(CpuMutants, ScenesTheMutantCannotChangeKeepTheirFrame) {
   EXPECT_EQ(cpuMutantFrame(frame, shaders::Mutant::LegacyFalloffBaked).prepared, prepared);
 }
 
+// shaders/shader_interface.def's kinds: the CPU mutants are those this file
+// implements.
+TEST(CpuMutants, TheTablesCpuMutantsAreTheImplementedOnes) {
+  for (const shaders::MutantName& m : shaders::mutantNames())
+    EXPECT_EQ(isCpuMutant(m.mutant), m.kind == shaders::MutantKind::Cpu) << m.name;
+}
+
 }  // namespace
 }  // namespace conformance

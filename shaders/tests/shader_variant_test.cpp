@@ -20,7 +20,7 @@ TEST(ShaderVariant, DefaultIsTheSpecialisedModelWithoutMutant) {
   EXPECT_EQ(mutantName(Mutant::None), "none");
 }
 
-// The forward pass looks up every slot in use (-1, features.glsl); a light
+// The forward pass looks up every slot in use (-1, shader_interface.def); a light
 // pass its light's own slots, -2 for a kind it has none of; the full shader
 // keeps every slot in the light pass too.
 TEST(ShaderVariant, ALightPassLooksUpItsLightsSlotsAlone) {
@@ -53,7 +53,7 @@ TEST(ShaderVariant, EveryMutantNameRoundTrips) {
     variant.mutant = m.mutant;
     EXPECT_EQ(constantValues(lighting::ShaderFeatures{}, variant)[kMutant], static_cast<int>(m.mutant));
   }
-  // The numbers are dense from 1, as shaders/mutants.glsl numbers them.
+  // The numbers are dense from 1, as shaders/shader_interface.def numbers them.
   for (int i = 1; i <= int(numbers.size()); ++i) EXPECT_TRUE(numbers.count(i)) << i;
   EXPECT_GE(mutantNames().size(), 12u);
   EXPECT_EQ(mutantFromName("no-such-mutant"), std::nullopt);
@@ -74,6 +74,16 @@ TEST(ShaderVariant, OnlyTheShadowCompareMutantChangesTheShadowLookupCompare) {
               m.mutant == Mutant::ShadowCompareLess ? lighting::DepthCompare::Less : lighting::DepthCompare::LessOrEqual)
         << m.name;
   EXPECT_EQ(shadowLookupCompare(Mutant::None), lighting::DepthCompare::LessOrEqual);
+}
+
+// shader_interface.def's kinds: a pipeline mutant, and only a pipeline
+// mutant, changes the light volumes' rule or the shadow samplers' compare.
+TEST(ShaderVariant, ThePipelineMutantsAreThoseThatChangeThePipelineState) {
+  for (const MutantName& m : mutantNames()) {
+    const bool changesState = volumeRule(m.mutant) != lighting::VolumeRule::Model ||
+                              shadowLookupCompare(m.mutant) != lighting::kShadowLookupCompare;
+    EXPECT_EQ(changesState, m.kind == MutantKind::Pipeline) << m.name;
+  }
 }
 
 }  // namespace
