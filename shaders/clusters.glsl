@@ -24,8 +24,8 @@ bool clusteredLights() { return CLUSTERED_LIGHTS && frameData.lightCounts[opaque
 // image's top), the slice of its view depth (ClusterGrid::sliceOf).
 // `clip` is forward.vert's gl_Position, interpolated (perspective-correct, so
 // it is viewProjection * p up to rounding), not viewProjection * p here:
-// lavapipe (Mesa 22.3) took a fixed 70-180 ms a frame longer when this stage
-// read the matrix (measured; the other drivers did not), which fits its
+// reading the matrix in this stage makes a lavapipe (Mesa 22.3) frame a fixed
+// 70-180 ms longer (measured; the other drivers are not affected), which fits its
 // per-bind recompiles (docs/vendors.md, "lavapipe recompiles": the matrix's
 // loads change how much inlining removes, and so whether it keeps inlining),
 // measured with the steering uniforms read at constant offsets.

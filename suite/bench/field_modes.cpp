@@ -59,8 +59,8 @@ bool isLightPathMode(const std::string& mode) {
 }  // namespace
 
 // A slow driver draws the field at 160x90 in its full set too (the full
-// bench's budget: at 320x180 a softpipe feature frame took 3 to 4 s, and its modes
-// were 90 of the full bench's 650 s); its error is still measured on every
+// bench's budget: at 320x180 a softpipe feature frame takes 3 to 4 s, and its modes
+// would take 90 s of a 650 s full bench); its error is still measured on every
 // mode, its speed is a reference rasterizer's.
 FieldSize fieldSize(const RunState& run) {
   if (run.settings.fieldWidth > 0) return {run.settings.fieldWidth, run.settings.fieldHeight};
@@ -132,7 +132,7 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
                                                 std::end(kFilteredShadowResolutions))
           continue;
         // A slow driver (softpipe's share of the budget): one
-        // mode, bilinear at 256 (a shadowed softpipe frame took 4 s even
+        // mode, bilinear at 256 (a shadowed softpipe frame takes 4 s even
         // at 320x180).
         if (slow && (resolution != 256 || filter != ShadowFilter::Bilinear)) continue;
         modes.push_back(modeOf(FrameMode::AllLights, false, shadowModeName(filter, resolution)));
