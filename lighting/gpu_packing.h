@@ -51,7 +51,7 @@ struct GpuFrameBlock {
   GpuLight otherLights[kGpuMaxOtherLights];
   // xyz: the camera position rounded to float; w: 1. The model never reads
   // it (positions are camera-relative); only the test-only mutants in
-  // absolute coordinates (shaders/shader_interface.def) do, and w = 1 is a factor
+  // absolute coordinates (forward.vert, lighting.glsl) do, and w = 1 is a factor
   // the shader compiler cannot know, so it cannot fold (p + c) - c away.
   GpuVec4 cameraPosition;
   // SPEC 3.8's view vector: xyz the orthographic V (the unit vector opposite

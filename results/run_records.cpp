@@ -102,7 +102,6 @@ TaskResult TaskResult::abnormal(const std::string& test, Verdict verdict, const 
   result.test = test;
   result.rawVerdict = verdict;
   result.message = message;
-  result.frames = Json::array();
   return result;
 }
 

@@ -43,7 +43,8 @@ struct TaskResult : TaskOutcome {
   Json toJson() const;
   static TaskResult fromJson(const Json& json);
   // What a task that never got a worker's result (a crash, a timeout, a
-  // backend that went away) is recorded as.
+  // backend that went away) is recorded as: its outcome all null
+  // (docs/results-format.md), but the message.
   static TaskResult abnormal(const std::string& test, comparison::Verdict verdict, const std::string& message);
 };
 

@@ -83,24 +83,21 @@ class Execution {
     std::vector<CombinationRun> runs(inputs_.combinations.size());
     for (std::size_t c = 0; c < runs.size(); ++c) {
       std::vector<results::StatusAndMessage> statuses;
-      std::vector<results::TaskResult> firstResults;
       int partCount = 0;
       for (std::size_t p = 0; p < parts.size(); ++p) {
         if (parts[p].combination != c) continue;
-        const PartOutcome& part = outcomes[p];
+        PartOutcome& part = outcomes[p];
         ++partCount;
         statuses.push_back({part.status, part.message});
         if (runs[c].device.is_null()) runs[c].device = part.device;
         runs[c].workerSeconds += part.wallSeconds;
         runs[c].tasks.insert(runs[c].tasks.end(), parts[p].tasks.begin(), parts[p].tasks.end());
-        for (const results::TaskResult& result : part.results) {
-          runs[c].attempts.push_back({{result, "logs/" + names_[c] + ".log"}});
-          firstResults.push_back(result);
-        }
+        runs[c].taskTimes += results::taskTimesOf(part.results);
+        for (results::TaskResult& result : part.results)
+          runs[c].attempts.push_back({{std::move(result), "logs/" + names_[c] + ".log"}});
       }
       if (partCount > 0) concatenateLogs(logsDir_, names_[c], partCount);
       runs[c].status = results::combinedBackendStatus(statuses, "the backend went away during the run: ");
-      runs[c].taskTimes = results::taskTimesOf(firstResults);
     }
     return runs;
   }

@@ -53,8 +53,7 @@ Shard readShard(const fs::path& dir) {
   } catch (const Json::parse_error& e) {
     throw MergeRefused(file.string() + ": not JSON: " + e.what());
   }
-  if (!json.is_object() || json.value("format", "") != "lightcts-results")
-    throw MergeRefused(file.string() + ": not a lightcts results.json");
+  if (!json.is_object()) throw MergeRefused(file.string() + ": not a lightcts results.json");
   if (!json.contains("shard") || !json["shard"].is_object())
     throw MergeRefused(file.string() + ": not a shard (a run without --shard I/N); there is nothing to merge it with");
   for (const char* key : {"tests", "backends", "mutants"})
@@ -198,7 +197,8 @@ MergedMutant mergeMutant(const std::vector<std::pair<const MutantRecord*, const 
   m.killedBy.clear();
   m.evidence = nullptr;
   std::size_t firstKill = SIZE_MAX;
-  results::MutantObservations seen = results::observationsOf(records.front().first->status);
+  results::MutantObservations seen;
+  seen.backendAbsent = true;  // absent only where every shard says so
   for (const auto& [r, shard] : records) {
     seen = results::joined(seen, results::observationsOf(r->status));
     m.killedBy.insert(m.killedBy.end(), r->killedBy.begin(), r->killedBy.end());
@@ -348,13 +348,8 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
   writeRunOutputs(merged.toJson(), outDir);
 
   for (const BackendRecord& b : merged.backends) {
-    out << "merge: " << b.backend << ": " << comparison::backendStatusName(b.status);
-    for (const comparison::Verdict verdict : comparison::kAllVerdicts)
-      if (const auto it = b.counts.find(verdict); it != b.counts.end() && it->second > 0)
-        out << ", " << it->second << " " << comparison::verdictName(verdict);
-    if (!first.mutantsRun.empty())
-      out << "; mutants: " << b.mutantCounts.killed << " killed, " << b.mutantCounts.survived << " survived";
-    out << "\n";
+    out << "merge: " << b.backend << ": " << comparison::backendStatusName(b.status)
+        << backendCounts(b, !first.mutantsRun.empty()) << "\n";
   }
   out << "merge: " << shards.size() << " shard(s), " << merged.tests.size() << " test(s) into "
       << (outDir / "results.json").string() << ", report in " << (outDir / "report" / "index.html").string()

@@ -8,6 +8,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <string>
 
 namespace runner {
 
@@ -23,6 +24,17 @@ std::string scenesDigest(const std::vector<fs::path>& sceneFiles, const fs::path
     all += std::to_string(name.size()) + ":" + name + std::to_string(bytes.size()) + ":" + bytes;
   }
   return baking::toHex(baking::sha256(all.data(), all.size()));
+}
+
+std::string backendCounts(const results::BackendRecord& backend, bool mutantsChecked) {
+  std::string text;
+  for (const comparison::Verdict verdict : comparison::kAllVerdicts)
+    if (const auto it = backend.counts.find(verdict); it != backend.counts.end() && it->second > 0)
+      text += ", " + std::to_string(it->second) + " " + std::string(comparison::verdictName(verdict));
+  if (mutantsChecked)
+    text += "; mutants: " + std::to_string(backend.mutantCounts.killed) + " killed, " +
+            std::to_string(backend.mutantCounts.survived) + " survived";
+  return text;
 }
 
 void removeStaleRunOutputs(const fs::path& outDir) {

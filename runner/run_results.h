@@ -3,6 +3,8 @@
 // earlier run's files, and writing the run's files.
 #pragma once
 
+#include "results/run_records.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -14,6 +16,11 @@ namespace runner {
 // A digest of a scene folder's files (their relative paths and bytes, in
 // catalogue order): two runs with the same digest ran the same scenes.
 std::string scenesDigest(const std::vector<std::filesystem::path>& sceneFiles, const std::filesystem::path& root);
+
+// A backend's counts for the console, as `run` and `merge` print them after
+// its status: ", 161 Pass, 12 ExpectedFail; mutants: 33 killed, 0 survived"
+// (the mutants only when the run checked some).
+std::string backendCounts(const results::BackendRecord& backend, bool mutantsChecked);
 
 // Removes what an earlier run left in `outDir` that this one might not
 // rewrite (evidence, mutants, report, results files, part and retry logs),

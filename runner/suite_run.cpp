@@ -56,13 +56,8 @@ std::string backendLine(const results::BackendRecord& backend, bool mutantsCheck
   std::ostringstream line;
   line << "run: " << backend.backend << ": " << backend.status;
   if (!backend.message.empty()) line << " (" << backend.message << ")";
-  for (const comparison::Verdict verdict : comparison::kAllVerdicts)
-    if (const auto it = backend.counts.find(verdict); it != backend.counts.end() && it->second > 0)
-      line << ", " << it->second << " " << verdict;
-  if (mutantsChecked)
-    line << "; mutants: " << backend.mutantCounts.killed << " killed, " << backend.mutantCounts.survived
-         << " survived";
-  line << " (" << std::fixed << std::setprecision(1) << backend.wallSeconds << " s in workers)";
+  line << backendCounts(backend, mutantsChecked) << " (" << std::fixed << std::setprecision(1) << backend.wallSeconds
+       << " s in workers)";
   return line.str();
 }
 

@@ -26,11 +26,12 @@
 
 namespace lighting {
 
-GltfError::GltfError(std::string file, std::string pointer, std::string message)
+GltfError::GltfError(std::string file, std::string pointer, std::string message, TextPosition where)
     : std::runtime_error(file + ": " + (pointer.empty() ? "" : pointer + ": ") + message),
       file_(std::move(file)),
       pointer_(std::move(pointer)),
-      message_(std::move(message)) {}
+      message_(std::move(message)),
+      where_(where) {}
 
 bool isGltfPath(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
@@ -87,15 +88,9 @@ std::string glbJson(const std::vector<unsigned char>& bytes, const std::string& 
 // JSON, non-finite numbers and repeated keys refused with their place.
 Json parseDocument(const std::string& text, const std::string& file) {
   try {
-    return Json(readJsonInput(text, "a glTF file"));
+    return readJsonInput<Json>(text, "a glTF file");
   } catch (const JsonInputError& error) {
-    // An error with a JSON path is located by the scene loader, as every
-    // glTF error is; one without (a syntax error) says where itself.
-    const TextPosition at = error.where();
-    const std::string where = error.pointer().empty() && at.line > 0
-                                  ? " (line " + std::to_string(at.line) + ", column " + std::to_string(at.column) + ")"
-                                  : "";
-    throw GltfError(file, error.pointer(), error.message() + where);
+    throw GltfError(file, error.pointer(), error.message(), error.where());
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "lighting/mesh.h"
 #include "lighting/scene.h"
+#include "scene_input/json_locations.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -21,16 +22,20 @@
 namespace lighting {
 
 // A fault of the glTF file, at an RFC 6901 pointer into its JSON ("" for the
-// whole file). The scene loader adds the line and column and exits 2.
+// whole file), and where its text is when the reader knows it (a syntax
+// error); otherwise the scene loader locates the pointer in a .gltf text. It
+// exits 2.
 class GltfError : public std::runtime_error {
  public:
-  GltfError(std::string file, std::string pointer, std::string message);
+  GltfError(std::string file, std::string pointer, std::string message, TextPosition where = {});
   const std::string& file() const { return file_; }
   const std::string& pointer() const { return pointer_; }
   const std::string& message() const { return message_; }
+  TextPosition where() const { return where_; }
 
  private:
   std::string file_, pointer_, message_;
+  TextPosition where_;
 };
 
 struct GltfImportRequest {

@@ -18,12 +18,6 @@ using Json = nlohmann::json;
 // The one extension the model reads (SPEC 2.1).
 constexpr std::string_view kLightsExtension = "KHR_lights_punctual";
 
-// "an array of 15" says more than "an array" where a length is what is wrong.
-std::string describeType(const Json& value) {
-  if (value.is_array()) return "an array of " + std::to_string(value.size());
-  return describeJsonType(value);
-}
-
 std::string numberText(const Json& value) { return value.dump(); }
 
 class ShapeChecker {
@@ -32,7 +26,7 @@ class ShapeChecker {
       : root_(root), file_(file), warnings_(warnings) {}
 
   void check() {
-    if (!root_.is_object()) fail("", "expected a JSON object, got " + describeType(root_));
+    if (!root_.is_object()) fail("", "expected a JSON object, got " + describeJsonTypeAndLength(root_));
     checkAsset();
     checkExtensionLists();
     sizes_ = {{"scenes", arraySize("scenes")},       {"nodes", arraySize("nodes")},
@@ -114,7 +108,7 @@ class ShapeChecker {
   // An index into the top-level array `list`.
   long long index(const Json& value, const std::string& pointer, const std::string& list) const {
     const std::size_t count = list == "lights" ? lightCount_ : sizes_.at(list);
-    if (!isInteger(value)) fail(pointer, "expected an index into " + list + ", got " + describeType(value));
+    if (!isInteger(value)) fail(pointer, "expected an index into " + list + ", got " + describeJsonTypeAndLength(value));
     const double v = value.get<double>();
     if (v < 0 || v >= double(count)) {
       fail(pointer, list + " index " + numberText(value) + " is out of range (the file has " + std::to_string(count) +
@@ -130,7 +124,7 @@ class ShapeChecker {
 
   void numbers(const Json& value, const std::string& pointer, std::size_t count, double min, double max) const {
     if (!value.is_array() || value.size() != count) {
-      fail(pointer, "expected an array of " + std::to_string(count) + " numbers, got " + describeType(value));
+      fail(pointer, "expected an array of " + std::to_string(count) + " numbers, got " + describeJsonTypeAndLength(value));
     }
     for (std::size_t i = 0; i < count; ++i) number(value[i], pointer + "/" + std::to_string(i), min, max);
   }
@@ -143,7 +137,7 @@ class ShapeChecker {
   // is a warning.
   void checkName(const Json& object, const std::string& pointer) const {
     if (const Json* name = member(object, "name"); name && !name->is_string()) {
-      warn(pointer + "/name", "expected a string, got " + describeType(*name) + "; ignored");
+      warn(pointer + "/name", "expected a string, got " + describeJsonTypeAndLength(*name) + "; ignored");
     }
   }
 
@@ -169,7 +163,7 @@ class ShapeChecker {
       expectArray(*list, pointer);
       for (std::size_t i = 0; i < list->size(); ++i) {
         const std::string at = pointer + "/" + std::to_string(i);
-        if (!(*list)[i].is_string()) fail(at, "expected an extension name, got " + describeType((*list)[i]));
+        if (!(*list)[i].is_string()) fail(at, "expected an extension name, got " + describeJsonTypeAndLength((*list)[i]));
         const std::string name = (*list)[i].get<std::string>();
         if (name == kLightsExtension) continue;
         if (std::string_view(key) == "extensionsRequired") {
@@ -204,7 +198,7 @@ class ShapeChecker {
     const std::string typeName = type->is_string() ? type->get<std::string>() : "";
     if (typeName != "directional" && typeName != "point" && typeName != "spot") {
       fail(pointer + "/type", "expected directional, point or spot, got " +
-                                  (type->is_string() ? "'" + typeName + "'" : describeType(*type)));
+                                  (type->is_string() ? "'" + typeName + "'" : describeJsonTypeAndLength(*type)));
     }
     if (const Json* color = member(light, "color")) numbers(*color, pointer + "/color", 3, 0, kInf);
     if (const Json* intensity = member(light, "intensity")) number(*intensity, pointer + "/intensity", 0, kInf);
@@ -319,7 +313,7 @@ class ShapeChecker {
     if (!length) fail(pointer + "/byteLength", "missing required key 'byteLength'");
     integer(*length, pointer + "/byteLength", 1, kMaxBytes);
     if (const Json* uri = member(buffer, "uri"); uri && !uri->is_string())
-      fail(pointer + "/uri", "expected a string, got " + describeType(*uri));
+      fail(pointer + "/uri", "expected a string, got " + describeJsonTypeAndLength(*uri));
   }
 
   void checkMaterial(const Json& material, const std::string& pointer) {
@@ -352,7 +346,7 @@ class ShapeChecker {
   void checkTextureInfo(const Json& info, const std::string& pointer) {
     noteIgnored("textures are not part of the model; ignored", pointer);
     if (!info.is_object()) {
-      warn(pointer, "expected a texture reference object, got " + describeType(info) + "; ignored");
+      warn(pointer, "expected a texture reference object, got " + describeJsonTypeAndLength(info) + "; ignored");
       return;
     }
     const Json* index = member(info, "index");
@@ -363,14 +357,14 @@ class ShapeChecker {
       warn(pointer + "/texCoord", "expected an integer >= 0, got " + texCoord->dump() + "; ignored");
     for (const char* key : {"scale", "strength"})
       if (const Json* value = member(info, key); value && !value->is_number())
-        warn(pointer + "/" + key, "expected a number, got " + describeType(*value) + "; ignored");
+        warn(pointer + "/" + key, "expected a number, got " + describeJsonTypeAndLength(*value) + "; ignored");
     if (const Json* extensions = member(info, "extensions")) {
       if (!extensions->is_object()) {
-        warn(pointer + "/extensions", "expected an object, got " + describeType(*extensions) + "; ignored");
+        warn(pointer + "/extensions", "expected an object, got " + describeJsonTypeAndLength(*extensions) + "; ignored");
       } else {
         for (const auto& item : extensions->items())
           if (!item.value().is_object())
-            warn(pointer + "/extensions/" + item.key(), "expected an object, got " + describeType(item.value()) + "; ignored");
+            warn(pointer + "/extensions/" + item.key(), "expected an object, got " + describeJsonTypeAndLength(item.value()) + "; ignored");
       }
     }
   }

@@ -22,4 +22,12 @@ std::string describeJsonType(const Json& value) {
   }
 }
 
+// The same, with an array's length ("an array of 2 values"), where the
+// length is what is wrong.
+template <typename Json>
+std::string describeJsonTypeAndLength(const Json& value) {
+  if (!value.is_array()) return describeJsonType(value);
+  return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " value" : " values");
+}
+
 }  // namespace lighting

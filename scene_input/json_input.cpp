@@ -11,8 +11,6 @@
 namespace lighting {
 namespace {
 
-using Json = nlohmann::ordered_json;
-
 // nlohmann-json messages start "[json.exception.parse_error.101] parse error at
 // line 1, column 8: "; the position is reported separately, so keep the rest.
 std::string stripExceptionPrefix(const std::string& what) {
@@ -57,17 +55,18 @@ std::optional<JsonValueSpan> findOverflowingNumber(std::string_view text) {
   return std::nullopt;
 }
 
+template <typename Json>
 Json parse(std::string_view text, std::string_view kind) {
   const std::string nonFinite = "non-finite numbers (NaN, Infinity) are not allowed in " + std::string(kind);
   try {
     return Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& error) {
+  } catch (const typename Json::parse_error& error) {
     // `byte` is the 1-based index of the last character read.
     const std::size_t offset = error.byte > 0 ? error.byte - 1 : 0;
     if (auto start = nonFiniteLiteralStart(text, offset))
       throw JsonInputError("", textPositionAt(text, *start), nonFinite + "; found '" + literalAt(text, *start) + "'");
     throw JsonInputError("", textPositionAt(text, offset), "invalid JSON: " + stripExceptionPrefix(error.what()));
-  } catch (const Json::exception& error) {
+  } catch (const typename Json::exception& error) {
     if (auto number = findOverflowingNumber(text))
       throw JsonInputError(number->pointer, textPositionAt(text, number->valueOffset),
                            nonFinite + "; " + std::string(text.substr(number->valueOffset, number->valueLength)) +
@@ -92,11 +91,15 @@ void rejectDuplicateKeys(std::string_view text) {
 JsonInputError::JsonInputError(std::string pointer, TextPosition where, std::string message)
     : std::runtime_error(message), pointer_(std::move(pointer)), where_(where), message_(std::move(message)) {}
 
-nlohmann::ordered_json readJsonInput(std::string_view text, std::string_view kind) {
-  Json document = parse(text, kind);
+template <typename Json>
+Json readJsonInput(std::string_view text, std::string_view kind) {
+  Json document = parse<Json>(text, kind);
   rejectDuplicateKeys(text);
   return document;
 }
+
+template nlohmann::ordered_json readJsonInput(std::string_view, std::string_view);
+template nlohmann::json readJsonInput(std::string_view, std::string_view);
 
 std::string formatJsonNumber(double value) {
   std::array<char, 32> buffer{};

@@ -39,8 +39,12 @@ class JsonInputError : public std::runtime_error {
 };
 
 // `kind` names the input in the message of a non-finite number ("a scene",
-// "a glTF file"). Throws JsonInputError.
-nlohmann::ordered_json readJsonInput(std::string_view text, std::string_view kind);
+// "a glTF file"). Throws JsonInputError. Either JSON type: a scene keeps its
+// keys' order (the first unknown key is named), glTF's checks need none.
+template <typename Json = nlohmann::ordered_json>
+Json readJsonInput(std::string_view text, std::string_view kind);
+extern template nlohmann::ordered_json readJsonInput(std::string_view, std::string_view);
+extern template nlohmann::json readJsonInput(std::string_view, std::string_view);
 
 // The shortest text that reads back as `value` ("0.1", "1e+999" never: the
 // model's numbers are finite).

@@ -86,15 +86,6 @@ std::string joinKeys(Keys keys) {
 
 bool contains(Keys keys, std::string_view key) { return std::find(keys.begin(), keys.end(), key) != keys.end(); }
 
-std::string describeType(const Json& value) { return describeJsonType(value); }
-
-// "an array of 2 values" says more than "an array" when the length is what is wrong.
-std::string describeArrayOrType(const Json& value) {
-  if (!value.is_array()) return describeType(value);
-  return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " value" : " values");
-}
-
-
 template <typename T>
 using Choice = SceneWord<T>;  // lighting/scene_words.h
 
@@ -340,7 +331,7 @@ class SceneReader {
   T readChoice(const Node& node, const std::array<Choice<T>, N>& choices) const {
     std::string names;
     for (const Choice<T>& choice : choices) names += (names.empty() ? "" : ", ") + std::string(choice.name);
-    if (!node.value.is_string()) fail(node, "expected one of: " + names + "; got " + describeType(node.value));
+    if (!node.value.is_string()) fail(node, "expected one of: " + names + "; got " + describeJsonType(node.value));
     const std::string text = node.value.get<std::string>();
     for (const Choice<T>& choice : choices) {
       if (choice.name == text) return choice.value;
@@ -350,7 +341,7 @@ class SceneReader {
 
   Vec3 readVec3(const Node& node, const NumberBounds& bounds = kAnyNumber) const {
     if (!node.value.is_array() || node.value.size() != 3) {
-      fail(node, "expected an array of 3 numbers, got " + describeArrayOrType(node.value));
+      fail(node, "expected an array of 3 numbers, got " + describeJsonTypeAndLength(node.value));
     }
     const auto element = [&](std::size_t i) {
       return readNumber({node.value[i], node.pointer + "/" + std::to_string(i)}, bounds);
@@ -363,7 +354,7 @@ class SceneReader {
   void readFormatVersion(const Node& root) const {
     requireMember(root, "lightcts");
     const Node version = *member(root, "lightcts");
-    if (!version.value.is_number()) fail(version, "expected the format version 1, got " + describeType(version.value));
+    if (!version.value.is_number()) fail(version, "expected the format version 1, got " + describeJsonType(version.value));
     const double number = version.value.get<double>();
     if (number != 1.0) fail(version, "unsupported format version " + formatJsonNumber(number) + "; this loader reads version 1");
   }
@@ -388,7 +379,7 @@ class SceneReader {
   };
 
   std::vector<Import> readImports(const Node& node, Profile profile) const {
-    if (!node.value.is_array()) fail(node, "expected an array of imports, got " + describeType(node.value));
+    if (!node.value.is_array()) fail(node, "expected an array of imports, got " + describeJsonType(node.value));
     std::vector<Import> imports;
     for (std::size_t i = 0; i < node.value.size(); ++i)
       imports.push_back(readImport({node.value[i], node.pointer + "/" + std::to_string(i)}, profile));
@@ -431,6 +422,9 @@ class SceneReader {
     if (defaults) {
       expectObject(*defaults);
       checkKeys(*defaults, kLightDefaultsKeys);
+      if (!takeLights)
+        failOnKey(*defaults, "light_defaults sets the imported file's lights, and this import takes none");
+      checkLightDefaultValues(*defaults);
     }
     import.content = importFile(import.request, node);
     for (const ImportedPrimitive& primitive : import.content.primitives)
@@ -476,6 +470,18 @@ class SceneReader {
     return object;
   }
 
+  // The values of light_defaults that are the same for every light type, read
+  // once whether or not the file has lights (a value out of range is an error
+  // even where nothing takes it); `cookie` and `shadow_map` depend on the
+  // type and are read with each light.
+  void checkLightDefaultValues(const Node& defaults) const {
+    if (auto range = member(defaults, "range")) readNumber(*range, above(0));
+    if (auto mode = member(defaults, "mode")) readChoice(*mode, kLightModes);
+    if (auto shadows = member(defaults, "shadows")) readBool(*shadows);
+    if (auto strength = member(defaults, "shadow_strength")) readNumber(*strength, closed(0, 1));
+    if (auto falloff = member(defaults, "bake_falloff")) readChoice(*falloff, kBakeFalloffs);
+  }
+
   Light importedLight(const ImportedLight& in, const std::optional<Node>& defaults, const std::string& gltfFile,
                       const std::string& context, std::optional<double> bareRange = std::nullopt) const {
     Light light;
@@ -510,8 +516,10 @@ class SceneReader {
   // A GltfError as a scene error: the glTF file, its JSON path, the line and
   // column in a .gltf text, and which scene imported it.
   [[noreturn]] static void throwGltfError(const GltfError& error, const std::string& context) {
-    TextPosition where;
-    if (!error.pointer().empty() && std::filesystem::path(error.file()).extension() != ".glb") {
+    // A .glb's JSON is a chunk of a binary file: no line and column of it.
+    const bool jsonText = std::filesystem::path(error.file()).extension() != ".glb";
+    TextPosition where = jsonText ? error.where() : TextPosition{};
+    if (jsonText && where.line == 0 && !error.pointer().empty()) {
       std::ifstream in(error.file(), std::ios::binary);
       std::ostringstream text;
       text << in.rdbuf();
@@ -785,7 +793,7 @@ class SceneReader {
   // them in the message, e.g. "[sx, sz]".
   std::pair<double, double> readPositivePair(const Node& node, std::string_view form) const {
     if (!node.value.is_array() || node.value.size() != 2) {
-      fail(node, "expected " + std::string(form) + ", an array of 2 numbers, got " + describeArrayOrType(node.value));
+      fail(node, "expected " + std::string(form) + ", an array of 2 numbers, got " + describeJsonTypeAndLength(node.value));
     }
     return {readNumber({node.value[0], node.pointer + "/0"}, above(0)),
             readNumber({node.value[1], node.pointer + "/1"}, above(0))};
@@ -958,7 +966,7 @@ class SceneReader {
         requireMember(node, "cube");
         const Node cube = *member(node, "cube");
         if (!cube.value.is_array() || cube.value.size() != kCubeFaces)
-          fail(cube, "expected the six faces [+X, -X, +Y, -Y, +Z, -Z], got " + describeArrayOrType(cube.value));
+          fail(cube, "expected the six faces [+X, -X, +Y, -Y, +Z, -Z], got " + describeJsonTypeAndLength(cube.value));
         for (std::size_t f = 0; f < kCubeFaces; ++f) {
           const Node face{cube.value[f], cube.pointer + "/" + std::to_string(f)};
           readCookieImage(face, cookie);
@@ -1010,7 +1018,7 @@ class SceneReader {
     if (count) frames.count = readInt(*count, 1, kMaxFrames);
     const auto path = member(node, "camera_path");
     if (!path) return frames;
-    if (!path->value.is_array()) fail(*path, "expected an array of keyframes, got " + describeType(path->value));
+    if (!path->value.is_array()) fail(*path, "expected an array of keyframes, got " + describeJsonType(path->value));
     if (path->value.size() == 1) {
       fail(*path, "expected no keyframes (a still camera) or at least 2, got 1");
     }

@@ -19,6 +19,17 @@ constexpr std::int32_t kEverySlotInUse = kConstantDefaults[kLightCookieSlot];
 static_assert(kConstantDefaults[kLightShadowSlot] == kEverySlotInUse);
 constexpr std::int32_t kNoSlot = -2;
 
+// The table's cookie and shadow-map slots are the model's, in count (the
+// textures) and in the full shader's constants: one check for both backends.
+static_assert(binding::kCookieTexture.count() == lighting::kMaxCookieTextures &&
+              kConstantDefaults[kCookieTextures] == lighting::kMaxCookieTextures);
+static_assert(binding::kCookieCube.count() == lighting::kMaxCookieCubes &&
+              kConstantDefaults[kCookieCubes] == lighting::kMaxCookieCubes);
+static_assert(binding::kShadowMap.count() == lighting::kMaxShadowMaps &&
+              kConstantDefaults[kShadowMapTextures] == lighting::kMaxShadowMaps);
+static_assert(binding::kShadowCube.count() == lighting::kMaxShadowCubes &&
+              kConstantDefaults[kShadowMapCubes] == lighting::kMaxShadowCubes);
+
 // Whether a constant is an int in the GLSL (the mutant, the slot counts and slots);
 // every other one is a bool. GLSL has no implicit int-to-bool conversion, so
 // the OpenGL backend spells each as its type.

@@ -34,8 +34,7 @@ def without_timings(value):
 # What may differ between an unsharded run and the merge of its one shard:
 # when and how long (the summed task times included), the command line, and
 # the merge's own record of its shards.
-TIMES_AND_PROVENANCE = {"timings_ms", "wall_s", "duration_s", "started_utc", "command", "merged_from",
-                        "slowest"}
+TIMES_AND_PROVENANCE = {"timings_ms", "wall_s", "duration_s", "started_utc", "command", "slowest"}
 TIMED = {"task_ms": ("reference", "total")}  # keys whose times differ while their counts must not
 
 

@@ -1,9 +1,9 @@
 # The scene tests' run of one backend combination (suite/scene_tests.cmake):
 # `lightcts run` over every suite scene, without mutants or budgets, one
-# worker, no flake retries (a scene test checks one attempt, as `compare`
+# worker at a time (a fresh one every 24 scenes), no flake retries (a scene test checks one attempt, as `compare`
 # would), then its verdicts split into one file per test for the scene tests
 # to read (suite/scene_run_verdicts.py). Its own result is only whether the
-# run left verdicts (or said the combination is not here): a failing scene
+# run left verdicts (a combination that is not here leaves NotSupported ones): a failing scene
 # fails its own test, not this one.
 #   cmake -DLIGHTCTS=exe -DPYTHON=python3 -DSCENES=dir -DCOMBINATION=suffix -DOUT=dir -P scene_run.cmake
 file(REMOVE_RECURSE ${OUT})
@@ -25,7 +25,6 @@ foreach(worker_log ${worker_logs})
   endif()
 endforeach()
 execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_run_verdicts.py ${OUT}/run ${OUT}/verdicts
-                        ${OUT}/run.log
                 RESULT_VARIABLE split)
 if(NOT split EQUAL 0)
   message(FATAL_ERROR "the run of ${COMBINATION} left no verdicts to read")

@@ -2,10 +2,10 @@
 """Splits a `lightcts run`'s results.json into one file per test, for the
 scene tests of ctest (suite/scene_tests.cmake): OUT/<test>.txt holds one
 line, `<raw_verdict> <test>: <message or numbers>`, then the evidence page
-of a failure. With no results.json (the backend is not here: `run` exited
-3), OUT/NotSupported.txt holds the run's reason instead.
+of a failure. A combination that is not here still has its results.json
+(`run` writes it before it exits 3), each test NotSupported.
 
-    scene_run_verdicts.py RUN_DIR OUT_DIR [RUN_LOG]
+    scene_run_verdicts.py RUN_DIR OUT_DIR
 
 Exit 0 when the files are written; 1 when the run left nothing to read.
 """
@@ -29,23 +29,15 @@ def line_of(test):
 
 
 def main():
-    if len(sys.argv) not in (3, 4):
+    if len(sys.argv) != 3:
         print(__doc__, file=sys.stderr)
         return 2
     run_dir, out_dir = sys.argv[1], sys.argv[2]
     os.makedirs(out_dir, exist_ok=True)
     results_path = os.path.join(run_dir, 'results.json')
     if not os.path.exists(results_path):
-        log = ''
-        if len(sys.argv) == 4 and os.path.exists(sys.argv[3]):
-            with open(sys.argv[3], encoding='utf-8', errors='replace') as f:
-                log = f.read().strip()
-        if 'no backend asked for is present' not in log:
-            print('no results.json in %s:\n%s' % (run_dir, log))
-            return 1
-        with open(os.path.join(out_dir, 'NotSupported.txt'), 'w') as f:
-            f.write(log + '\n')
-        return 0
+        print('no results.json in %s: the run did not finish' % run_dir)
+        return 1
     with open(results_path) as f:
         results = json.load(f)
     for test in results['tests']:

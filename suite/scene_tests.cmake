@@ -90,9 +90,9 @@ foreach(scene ${scene_files})
   endforeach()
 endforeach()
 
-# Each combination draws every suite scene in one `lightcts run` (one
-# worker, so one driver start and one shader compile per pipeline, not per
-# scene: SwiftShader compiles a pipeline in about a second, and every GL
+# Each combination draws every suite scene in one `lightcts run` (one worker
+# at a time, a fresh one every 24 scenes, so a driver start and a shader
+# compile per pipeline every 24 scenes, not per scene: SwiftShader compiles a pipeline in about a second, and every GL
 # process loads Mesa and LLVM), the scene tests above read its verdicts.
 # Vulkan validation is on, and a layer message fails the test it came in
 # (the worker reports it as a Crash). Label `scene-runs`.

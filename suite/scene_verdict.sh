@@ -7,14 +7,11 @@
 #   scene_verdict.sh VERDICTS TEST WANT
 #
 # Exit 0 as wanted; 1 otherwise, or when the run gave the test no verdict;
-# 77 (ctest's skip) when the combination, or the scene's feature, is not here.
+# 77 (ctest's skip) when the combination, or the scene's feature, is not
+# here (its raw verdict is NotSupported).
 verdicts=$1
 test=$2
 want=$3
-if [ -f "$verdicts/NotSupported.txt" ]; then
-  echo "NotSupported: $(cat "$verdicts/NotSupported.txt")"
-  exit 77
-fi
 if [ ! -f "$verdicts/$test.txt" ]; then
   echo "FAIL: the run gave $test no verdict (its log is beside $verdicts)"
   exit 1

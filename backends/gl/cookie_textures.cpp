@@ -10,9 +10,6 @@
 
 namespace backends::gl {
 
-static_assert(shaders::binding::kCookieTexture.count() == lighting::kMaxCookieTextures);
-static_assert(shaders::binding::kCookieCube.count() == lighting::kMaxCookieCubes);
-
 void bindCookieInterface(const GlFunctions& gl, GLuint program) {
   bindUniformBlock(gl, program, shaders::binding::kCookieBlock);
   bindSamplers(gl, program, shaders::binding::kCookieTexture);

@@ -22,8 +22,6 @@ bool isCubeSlot(int slot) { return slot >= lighting::kMaxShadowMaps; }
 
 }  // namespace
 
-static_assert(shaders::binding::kShadowMap.count() == lighting::kMaxShadowMaps);
-static_assert(shaders::binding::kShadowCube.count() == lighting::kMaxShadowCubes);
 
 void bindShadowInterface(const GlFunctions& gl, GLuint program) {
   bindUniformBlock(gl, program, shaders::binding::kShadowBlock);

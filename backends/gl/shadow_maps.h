@@ -78,7 +78,7 @@ class ShadowMaps {
   void drawViews(const SceneDraws& scene);
 
   const GlFunctions& gl_;
-  GLint compareFunc_ = GL_LEQUAL;  // SPEC 3.9 (shaders::shadowLookupCompare)
+  const GLint compareFunc_;  // SPEC 3.9, the model's (shaders::shadowLookupCompare)
   GLint maxSize_ = 0, maxCubeSize_ = 0;
   GlName block_, passBlocks_, framebuffer_, timer_;
   std::size_t passStride_ = 0;

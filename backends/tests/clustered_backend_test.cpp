@@ -58,7 +58,8 @@ TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
   int checked = 0, frames = 0, legacy = 0, deferred = 0, lists = 0;
   double worstTightness = 0;
   std::string worstScene;
-  for (const std::filesystem::path& file : backends::testing::suiteSceneFiles(LIGHTCTS_SCENES_DIR)) {
+  for (const conformance::SceneFile& sceneFile : conformance::findSceneFiles(LIGHTCTS_SCENES_DIR)) {
+    const std::filesystem::path& file = sceneFile.path;
     lighting::Scene scene = lighting::loadSceneFile(file.string());
     if (scene.pipeline.profile == lighting::Profile::Legacy) {
       ++legacy;
@@ -78,7 +79,7 @@ TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
     const conformance::SceneCheck check = conformance::checkScene(references, *backend, options);
     ++checked;
     frames += int(check.frames.size());
-    const std::string test = backends::testing::sceneTestName(file, GetParam().suffix);
+    const std::string test = sceneFile.caseName() + "." + GetParam().suffix;
     // A driver's known mismatch (softpipe's filtered shadow compares) is its
     // all-lights frame's too: not the mode's to pass, nor its tightness.
     if (expectedFailures.contains(test)) continue;

@@ -1,5 +1,6 @@
 // The loop of the tests that hold a backend, or a variant of one, to every
-// suite scene's own comparison: the scene files in name order, each scene's
+// suite scene's own comparison (the scene files and their test names are
+// conformance/scene_catalogue.h's): each scene's
 // references from the build's reference cache ($LIGHTCTS_CACHE_DIR, which
 // the scenes' own tests fill: computed once per scene, not once per test),
 // SPEC 10's test names and the drivers' known mismatches.
@@ -7,10 +8,10 @@
 
 #include "baking/bake.h"
 #include "conformance/reference_cache.h"
+#include "conformance/scene_catalogue.h"
 #include "conformance/scene_check.h"
 #include "scene_input/scene_loader.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -19,25 +20,10 @@
 
 namespace backends::testing {
 
-// Every scene file under `scenesDir` (<group>/<name>.json), in name order.
-inline std::vector<std::filesystem::path> suiteSceneFiles(const std::filesystem::path& scenesDir) {
-  std::vector<std::filesystem::path> files;
-  for (const auto& group : std::filesystem::directory_iterator(scenesDir))
-    for (const auto& file : std::filesystem::directory_iterator(group.path()))
-      if (file.path().extension() == ".json") files.push_back(file.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 // The scene's references, read from and left in the build's reference cache.
 inline conformance::SceneReferences cachedSceneReferences(const std::filesystem::path& file, lighting::Scene scene) {
   const auto caching = conformance::referenceCaching(conformance::defaultReferenceCacheDirectory(), file, scene);
   return conformance::SceneReferences(baking::prepareBakedScene(std::move(scene)), caching);
-}
-
-// SPEC 10's name of a scene file's test on a combination: <group>.<name>.<suffix>.
-inline std::string sceneTestName(const std::filesystem::path& file, const std::string& suffix) {
-  return file.parent_path().filename().string() + "." + file.stem().string() + "." + suffix;
 }
 
 // The tests the expected-failures files of `folder` (suite/expected-failures/,

@@ -137,12 +137,12 @@ TEST(VulkanSpecialisation, FullShaderPassesEverySceneAsTheSpecialisedDoes) {
   const std::set<std::string> expectedFailures =
       backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_DIR);
   int scenes = 0;
-  for (const std::filesystem::path& file : backends::testing::suiteSceneFiles(LIGHTCTS_SCENES_DIR)) {
+  for (const conformance::SceneFile& file : conformance::findSceneFiles(LIGHTCTS_SCENES_DIR)) {
     conformance::SceneReferences references =
-        backends::testing::cachedSceneReferences(file, lighting::loadSceneFile(file.string()));
+        backends::testing::cachedSceneReferences(file.path, lighting::loadSceneFile(file.path.string()));
     const conformance::SceneCheck check = conformance::checkScene(references, *full);
     ++scenes;
-    const std::string test = backends::testing::sceneTestName(file, "vulkan");
+    const std::string test = file.caseName() + ".vulkan";
     if (expectedFailures.contains(test)) continue;
     EXPECT_EQ(check.verdict, comparison::Verdict::Pass)
         << test << " with the full shader: " << check.evidence().comparison.failingPixels

@@ -7,6 +7,7 @@
 // frame's lists outgrow it, and only then is the descriptor rewritten.
 #pragma once
 
+#include "backends/vulkan/descriptor_set_indices.h"
 #include "backends/vulkan/descriptor_sets.h"
 #include "backends/vulkan/gpu_memory.h"
 #include "lighting/frame.h"
@@ -16,8 +17,6 @@
 #include <optional>
 
 namespace backends::vulkan {
-
-constexpr std::uint32_t kClusterListsSetIndex = shaders::binding::kClusterLists.set;
 
 class ClusterLists {
  public:

@@ -14,8 +14,6 @@ namespace {
 
 constexpr std::uint32_t kTextureSlots = lighting::kMaxCookieTextures;
 constexpr std::uint32_t kCubeSlots = lighting::kMaxCookieCubes;
-static_assert(shaders::binding::kCookieTexture.count() == kTextureSlots);
-static_assert(shaders::binding::kCookieCube.count() == kCubeSlots);
 constexpr std::uint32_t kBindingCount = 1 + kTextureSlots + kCubeSlots;  // the block and the slots
 
 constexpr std::array<float, 1> kStandInTexel{1.0f};  // kCookieFormat: the value alone

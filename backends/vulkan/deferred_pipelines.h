@@ -9,7 +9,7 @@
 // each at its binding of shaders/shader_interface.def.
 // Each pass binds only the sets its shaders read.
 //
-// G-buffer pass: forward.vert + gbuffer.frag, four RGBA32F colour outputs and
+// G-buffer pass: forward.vert + gbuffer.frag, five RGBA32F colour outputs and
 // D32 depth, LESS with writes, back faces culled (as forward).
 // Light pass: deferred_light.vert/.frag into the light buffer, against the
 // G-buffer depth read-only; its rasterisation, depth test and blend are the

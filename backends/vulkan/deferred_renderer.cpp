@@ -99,7 +99,7 @@ void DeferredRenderer::record(const vk::raii::CommandBuffer& commands, const Sce
 void DeferredRenderer::bindUniforms(const vk::raii::CommandBuffer& commands, std::size_t object,
                                     std::size_t light) const {
   const std::array<std::uint32_t, 2> offsets = uniforms_->offsets(object, light);
-  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 0, {*uniforms_->descriptorSet()},
+  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kSceneSetIndex, {*uniforms_->descriptorSet()},
                               offsets);
 }
 
@@ -139,7 +139,7 @@ void DeferredRenderer::recordLightPass(const vk::raii::CommandBuffer& commands) 
   if (!volumeRanges_.empty()) {
     setFlippedViewport(commands, targets_->extent);
     commands.bindVertexBuffers(0, {*volumeVertices_->buffer()}, {vk::DeviceSize(0)});
-    commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 2, {textureSets_->lightPass()},
+    commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kGbufferSetIndex, {textureSets_->lightPass()},
                                 {});
     const vk::raii::Pipeline* bound = nullptr;
     for (std::size_t l = 0; l < volumeRanges_.size(); ++l) {
@@ -164,7 +164,7 @@ void DeferredRenderer::recordCompositePass(const vk::raii::CommandBuffer& comman
   setFlippedViewport(commands, output.color.extent);
   commands.bindPipeline(vk::PipelineBindPoint::eGraphics, **compositePipeline_);
   bindUniforms(commands, 0, 0);
-  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), 2, {textureSets_->composite()}, {});
+  commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipelines_.layout(), kGbufferSetIndex, {textureSets_->composite()}, {});
   commands.draw(3, 1, 0, 0);
   commands.endRendering();
 }

@@ -1,7 +1,7 @@
 // The deferred path (SPEC 3.7) of the Vulkan backend, recorded into draw()'s
 // command buffer in place of the forward pass:
 //   1. G-buffer pass: every object, as forward draws it (dynamic object
-//      offsets, set 1 maps), into four RGBA32F images and D32 depth;
+//      offsets, set 1 maps), into five RGBA32F images and D32 depth;
 //   2. light pass: one draw per lighting::lightVolumes(frame) entry into the
 //      light buffer, against the G-buffer depth attached read-only;
 //   3. composite pass: base + decoded light into the output colour image of

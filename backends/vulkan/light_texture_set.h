@@ -6,6 +6,7 @@
 // owners; each writes only its own bindings, both before the first draw.
 #pragma once
 
+#include "backends/vulkan/descriptor_set_indices.h"
 #include "backends/vulkan/descriptor_sets.h"
 #include "shaders/shader_interface.h"  // generated from shaders/shader_interface.def
 
@@ -18,7 +19,6 @@ namespace backends::vulkan {
 inline constexpr std::array kLightTextureBlocks = {shaders::binding::kCookieBlock, shaders::binding::kShadowBlock};
 inline constexpr std::array kLightTextures = {shaders::binding::kCookieTexture, shaders::binding::kCookieCube,
                                               shaders::binding::kShadowMap, shaders::binding::kShadowCube};
-constexpr std::uint32_t kLightTextureSetIndex = shaders::binding::kCookieBlock.set;
 
 vk::raii::DescriptorSetLayout createLightTextureSetLayout(const vk::raii::Device& device);
 

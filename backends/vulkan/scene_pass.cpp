@@ -1,5 +1,6 @@
 #include "backends/vulkan/scene_pass.h"
 
+#include "backends/vulkan/descriptor_set_indices.h"
 #include "lighting/raster_state.h"
 
 #include <array>
@@ -108,7 +109,7 @@ void recordSceneObjectsPass(const vk::raii::CommandBuffer& commands, const Scene
     if (range.indexCount == 0) continue;
     pass.bindUniforms(commands, o);
     if (pass.maps)
-      commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, pass.layout, 1, {pass.maps->set(o)}, {});
+      commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, pass.layout, kObjectMapsSetIndex, {pass.maps->set(o)}, {});
     commands.drawIndexed(range.indexCount, 1, range.firstIndex, range.vertexOffset, 0);
   }
   commands.endRendering();

@@ -2,6 +2,7 @@
 
 #include "backends/aligned_stride.h"
 #include "backends/backend.h"
+#include "backends/vulkan/descriptor_set_indices.h"
 #include "backends/vulkan/forward_pipeline.h"
 #include "backends/vulkan/raster_translation.h"
 #include "backends/vulkan/scene_pass.h"
@@ -83,7 +84,7 @@ ShadowMaps::ShadowMaps(const VulkanDevice& device, const PipelineCacheFile& cach
   for (int s = 0; s < lighting::kGpuShadowSlots; ++s) ensureSlot(slots_[s], 1, s >= k2dSlots);
 
   const auto vertex = vk::ShaderStageFlagBits::eVertex;
-  static_assert(shaders::binding::kShadowPassBlock.set == 0 && shaders::binding::kObjectBlock.set == 0);
+  static_assert(kShadowPassSetIndex == shaders::binding::kObjectBlock.set);  // one set, the pass's only one
   const std::array<vk::DescriptorSetLayoutBinding, 2> bindings{{
       {.binding = shaders::binding::kShadowPassBlock.binding,
        .descriptorType = vk::DescriptorType::eUniformBufferDynamic, .descriptorCount = 1, .stageFlags = vertex},
@@ -189,8 +190,6 @@ void ShadowMaps::writeSet(const lighting::Frame* frame) {
   std::array<vk::WriteDescriptorSet, 1 + lighting::kGpuShadowSlots> writes;
   writes[0] = {.dstSet = set_, .dstBinding = shaders::binding::kShadowBlock.binding, .descriptorCount = 1,
                .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &blockInfo};
-  static_assert(shaders::binding::kShadowMap.count() == k2dSlots);
-  static_assert(shaders::binding::kShadowCube.count() == lighting::kMaxShadowCubes);
   for (int s = 0; s < lighting::kGpuShadowSlots; ++s)
     writes[1 + s] = {.dstSet = set_,
                      .dstBinding = s < k2dSlots ? shaders::binding::kShadowMap.binding(s)
@@ -248,7 +247,7 @@ void ShadowMaps::record(const vk::raii::CommandBuffer& commands, const SceneGeom
                               .layout = *passLayout_,
                               .bindUniforms =
                                   [&](const vk::raii::CommandBuffer& cb, std::size_t object) {
-                                    cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *passLayout_, 0, {passSet},
+                                    cb.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *passLayout_, kShadowPassSetIndex, {passSet},
                                                           {viewOffset, objects_->objectOffset(object)});
                                   },
                               .maps = nullptr,

@@ -201,7 +201,8 @@ class VulkanBackend final : public Backend {
                             .bindUniforms =
                                 [&](const vk::raii::CommandBuffer& commands, std::size_t object) {
                                   commands.bindDescriptorSets(vk::PipelineBindPoint::eGraphics,
-                                                              *pipelines_.layout(), 0, {*uniforms_->descriptorSet()},
+                                                              *pipelines_.layout(), kSceneSetIndex,
+                                                              {*uniforms_->descriptorSet()},
                                                               {uniforms_->scene().objectOffset(object)});
                                 },
                             .maps = &*maps_});

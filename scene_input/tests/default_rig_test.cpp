@@ -18,6 +18,8 @@
 #include <string>
 #include <tuple>
 
+#include <unistd.h>
+
 namespace lighting {
 namespace {
 
@@ -116,7 +118,9 @@ TEST(DefaultRig, TheScenePrintedForAGltfFileLoadsAsTheSameScene) {
   const std::string file = kModels + "sphere.gltf";
   const Scene bare = loadSceneFile(file);
   const std::string printed = bareGltfSceneJson(bare, file).dump(2);
-  const std::filesystem::path saved = std::filesystem::temp_directory_path() / "lightcts-rig-scene.json";
+  // A name of its own: ctest runs each test in its own process, beside other checkouts' tests.
+  const std::filesystem::path saved =
+      std::filesystem::path(::testing::TempDir()) / ("lightcts-rig-scene-" + std::to_string(::getpid()) + ".json");
   std::ofstream(saved) << printed;
   const Scene again = loadSceneFile(saved.string());
   std::filesystem::remove(saved);
@@ -127,6 +131,13 @@ TEST(DefaultRig, TheScenePrintedForAGltfFileLoadsAsTheSameScene) {
     EXPECT_NEAR(glm::length(again.lights[i].position - bare.lights[i].position), 0, 1e-12);
     EXPECT_NEAR(again.lights[i].range, bare.lights[i].range, 1e-12);
     EXPECT_NEAR(again.lights[i].intensity, bare.lights[i].intensity, 1e-12);
+    if (bare.lights[i].type != LightType::Point)  // a point light's direction is no part of it
+      EXPECT_NEAR(glm::length(again.lights[i].direction - bare.lights[i].direction), 0, 1e-12);
+    EXPECT_NEAR(glm::length(again.lights[i].color - bare.lights[i].color), 0, 1e-12);
+    EXPECT_NEAR(again.lights[i].spotAngleDeg, bare.lights[i].spotAngleDeg, 1e-12);
+    ASSERT_EQ(again.lights[i].innerSpotAngleDeg.has_value(), bare.lights[i].innerSpotAngleDeg.has_value());
+    EXPECT_NEAR(again.lights[i].innerSpotAngleDeg.value_or(0), bare.lights[i].innerSpotAngleDeg.value_or(0), 1e-12);
+    EXPECT_EQ(again.lights[i].mode, bare.lights[i].mode);
   }
   EXPECT_EQ(again.objects.size(), bare.objects.size());
   EXPECT_EQ(again.ambient, bare.ambient);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -316,13 +317,54 @@ TEST_F(GltfRefusal, ARepeatedKeyAsInASceneFile) {
 }
 
 TEST_F(GltfRefusal, ANonFiniteLiteralAsInASceneFile) {
-  expectRefused(triangleGltf(R"([{"mesh": 0, "translation": [0, NaN, 0]}])"), "",
-                "non-finite numbers (NaN, Infinity) are not allowed in a glTF file");
+  const std::string gltf = triangleGltf(R"([{"mesh": 0, "translation": [0, NaN, 0]}])");
+  expectRefused(gltf, "", "non-finite numbers (NaN, Infinity) are not allowed in a glTF file");
+  // Where the literal starts, as FILE:LINE:COL like every error of a .gltf text.
+  const std::size_t newline = gltf.rfind('\n', gltf.find("NaN"));
+  const std::size_t line = 1 + std::size_t(std::count(gltf.begin(), gltf.begin() + std::ptrdiff_t(gltf.find("NaN")), '\n'));
+  const std::size_t column = gltf.find("NaN") - (newline == std::string::npos ? 0 : newline + 1) + 1;
+  try {
+    loadSceneFile((dir / "scene.json").string());
+  } catch (const SceneLoadError& e) {
+    EXPECT_EQ(e.error().line, int(line)) << e.what();
+    EXPECT_EQ(e.error().column, int(column)) << e.what();
+  }
 }
 
 TEST_F(GltfRefusal, RequiredExtension) {
   expectRefused(triangleGltf(R"([{"mesh": 0}])", "AAEC", R"(, "extensionsRequired": ["KHR_draco_mesh_compression"])"),
                 "/extensionsRequired/0", "lightcts does not read");
+}
+
+// A scene whose import of the one-triangle file (no lights) says `importExtra`
+// must fail at `pointer` of the scene itself.
+void expectSceneRefused(const fs::path& dir, const std::string& importExtra, const std::string& pointer,
+                        const std::string& words) {
+  std::ofstream(dir / "model.gltf") << triangleGltf();
+  const fs::path scene = dir / "scene.json";
+  std::ofstream(scene) << R"({"lightcts": 1, "image": {}, "camera": {}, "objects": [], "lights": [],
+    "imports": [{"gltf": "model.gltf")" << importExtra << "}]}";
+  try {
+    loadSceneFile(scene.string());
+    ADD_FAILURE() << "loaded with " << importExtra;
+  } catch (const SceneLoadError& e) {
+    EXPECT_EQ(e.error().file, scene.string());
+    EXPECT_EQ(e.error().jsonPath, pointer) << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(GltfRefusal, LightDefaultsOutOfRangeEvenWhereNoLightTakesThem) {
+  expectSceneRefused(dir, R"(, "light_defaults": {"range": -1})", "/imports/0/light_defaults/range",
+                     "expected a number > 0, got -1");
+  expectSceneRefused(dir, R"(, "light_defaults": {"shadow_strength": 2})", "/imports/0/light_defaults/shadow_strength",
+                     "expected a number in [0, 1], got 2");
+}
+
+TEST_F(GltfRefusal, LightDefaultsOnAnImportThatTakesNoLights) {
+  for (const char* lights : {R"(, "lights": false)", R"(, "lights": "default-rig")"})
+    expectSceneRefused(dir, std::string(lights) + R"(, "light_defaults": {"range": 5})", "/imports/0/light_defaults",
+                       "this import takes none");
 }
 
 TEST_F(GltfRefusal, ALightWithoutRangeNeedsLightDefaults) {
