@@ -10,9 +10,10 @@
 namespace backends {
 
 struct BackendCombination {
-  std::string suffix;   // vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe, vulkan-swiftshader
+  std::string suffix;   // vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe, vulkan-swiftshader,
+                        // gl-egl-zink
   std::string backend;  // SPEC 8 --backend: vulkan | gl-egl | gl-osmesa
-  std::string driver;   // --driver: "" (the backend's default), llvmpipe, softpipe or swiftshader
+  std::string driver;   // --driver: "" (the backend's default), llvmpipe, softpipe, swiftshader or zink
 
   // A GL backend, whose --driver is any Mesa Gallium driver; Vulkan's names
   // one of the drivers the Vulkan backend knows (vulkan/vulkan_drivers.h).
@@ -22,10 +23,11 @@ struct BackendCombination {
   // long tests scale down there.
   bool isSlowDriver() const { return driver == "softpipe"; }
   // OSMesa reaches the same Mesa driver as EGL through another context
-  // (client memory instead of a pbuffer): a second path to a driver that
-  // gl-egl and gl-egl-softpipe already time, so the bench times its profile
-  // modes only (docs/bench-format.md).
-  bool isSecondContextPath() const { return backend == "gl-osmesa"; }
+  // (client memory instead of a pbuffer), and zink draws OpenGL through
+  // lavapipe: each a second path to a driver that another combination
+  // already times (gl-egl, gl-egl-softpipe, vulkan), so the bench times its
+  // profile modes only (docs/bench-format.md).
+  bool isSecondContextPath() const { return backend == "gl-osmesa" || driver == "zink"; }
   // The suffix as a C++ identifier (gtest parameter names): '-' becomes '_'.
   std::string identifier() const;
 };
@@ -40,8 +42,9 @@ const BackendCombination* findCombination(std::string_view suffix);
 const BackendCombination* findCombination(std::string_view backend, std::string_view driver);
 
 // `backend` with `driver`: the table's combination where it has one, else
-// one named "<backend>-<driver>" (a Mesa driver the table does not list,
-// such as zink), so two runs on different drivers never share test names.
+// one named "<backend>-<driver>" (a pair the table does not list, such as
+// gl-osmesa with zink), so two runs on different drivers never share test
+// names.
 BackendCombination combinationWithDriver(std::string_view backend, std::string_view driver);
 
 // The Vulkan combination whose driver `driver` names (swiftshader), or null

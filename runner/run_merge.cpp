@@ -123,8 +123,8 @@ std::size_t combinationIndex(const std::string& suffix) {
 
 // The combinations of the run, in the unsharded run's order: the table's
 // (runner/backend_combination.h), then those the table does not list (a
-// `--driver` such as zink, which takes the place of the table's GL
-// combinations) in the order the shards name them.
+// `--driver` that takes the place of the table's GL combinations, such as
+// zink on gl-osmesa) in the order the shards name them.
 std::vector<std::string> combinationOrder(const std::vector<Shard>& shards) {
   std::vector<std::string> suffixes;
   for (const Shard& s : shards)

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The project's main job on every backend that is present: installs what is
 # missing, builds, and runs the whole suite with `lightcts run` (every scene
-# of suite/scenes/ on vulkan (lavapipe and SwiftShader), gl-egl, gl-osmesa
-# and both on softpipe, then the mutation check). A backend that is not present is NotSupported, never a
-# pass. Writes OUT_DIR/results.json, OUT_DIR/junit.xml and
-# OUT_DIR/report/index.html (docs/results-format.md, docs/vendors.md).
+# of suite/scenes/ on vulkan (lavapipe and SwiftShader), gl-egl, gl-osmesa,
+# both on softpipe and gl-egl on zink over lavapipe, then the mutation
+# check). A backend that is not present is NotSupported, never a pass.
+# Writes OUT_DIR/results.json, OUT_DIR/junit.xml and OUT_DIR/report/index.html
+# (docs/results-format.md, docs/vendors.md).
 # Usage: scripts/run.sh [OUT_DIR] [lightcts run options...]   (default: out/run)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -29,6 +29,12 @@ add_run_test(missing-driver-is-not-supported 3 "${vulkan_only}" "VK_ICD_FILENAME
   "no backend asked for is present")
 add_run_test(wrong-driver-never-passes 1 "${vulkan_only};--expect-driver;no-such-vendor" "" "${one_test}=Crash"
   "vulkan=error" "does not match the loaded device")
+# gl-egl-zink with lavapipe unusable (VK_LOADER_DRIVERS_DISABLE): NotSupported,
+# never a pass on another Vulkan driver.
+add_run_test(zink-without-lavapipe-is-not-supported 3
+  "--backend;gl-egl-zink;--scenes;${run_scenes};--no-mutants" "VK_LOADER_DRIVERS_DISABLE=*lvp*"
+  "attenuation.point-d-half-range.gl-egl-zink=NotSupported" "gl-egl-zink=NotSupported" "no backend asked for is present")
+set_tests_properties(run.zink-without-lavapipe-is-not-supported PROPERTIES LABELS "run;gl-egl-zink")
 
 # A baseline: the crash listed becomes ExpectedFail, a listed test that passes
 # UnexpectedPass.

@@ -11,15 +11,16 @@ function(add_choice_test name group suffixes args)
   set_tests_properties(run.choice-${name} PROPERTIES LABELS "run;choice")
 endfunction()
 
-# The shadows tests of the three Mesa combinations that are not softpipe,
+# The shadows tests of the four Mesa combinations that are not softpipe,
 # by globs and by a caselist (with comments and a blank line) that lists them.
-add_choice_test(include-and-exclude shadows "vulkan;gl-egl;gl-osmesa"
+add_choice_test(include-and-exclude shadows "vulkan;gl-egl;gl-osmesa;gl-egl-zink"
   "--include;shadows.*;--exclude;*softpipe*;--exclude;*swiftshader*")
 set(shadows_caselist ${choice_out}/shadows-caselist.txt)
 file(WRITE ${shadows_caselist}
   "# the shadows group, softpipe left out (written by suite/test_choice_tests.cmake)\n\n"
-  "shadows.*.vulkan\nshadows.*.gl-egl   # llvmpipe through EGL\nshadows.*.gl-osmesa\n")
-add_choice_test(caselist-does-the-same shadows "vulkan;gl-egl;gl-osmesa" "--caselist;${shadows_caselist}")
+  "shadows.*.vulkan\nshadows.*.gl-egl   # llvmpipe through EGL\nshadows.*.gl-osmesa\n"
+  "shadows.*.gl-egl-zink   # zink on lavapipe\n")
+add_choice_test(caselist-does-the-same shadows "vulkan;gl-egl;gl-osmesa;gl-egl-zink" "--caselist;${shadows_caselist}")
 # --driver turns the GL combinations into those of the driver named.
 add_choice_test(driver-names-the-gl-combinations limits "gl-egl-softpipe;gl-osmesa-softpipe"
   "--backend;gl-egl;--backend;gl-osmesa;--driver;softpipe;--include;limits.*")

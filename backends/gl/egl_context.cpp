@@ -83,13 +83,20 @@ class EglContext final : public GlContext {
     auto getPlatformDisplay =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(getProcAddress_("eglGetPlatformDisplayEXT"));
     if (!getPlatformDisplay) throw NotSupportedError("EGL has no eglGetPlatformDisplayEXT");
+    // The Vulkan driver under zink, while the display is initialised
+    // (gl_context.h); the rest of the process sees the environment as it was.
+    std::unique_ptr<ScopedEnvironment> vulkanDriver;
     if (options.device.empty()) {
       if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless"))
         throw NotSupportedError("EGL has no surfaceless platform (EGL_MESA_platform_surfaceless)");
+      vulkanDriver = pinVulkanDriverUnder(requestedMesaDriver(options));
       selectMesaDriver(requestedMesaDriver(options));
       display_ = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     } else {
-      if (!options.driver.empty()) selectMesaDriver(options.driver);
+      if (!options.driver.empty()) {
+        vulkanDriver = pinVulkanDriverUnder(options.driver);
+        selectMesaDriver(options.driver);
+      }
       display_ = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, chooseDevice(options.device), nullptr);
     }
     if (display_ == EGL_NO_DISPLAY) throw NotSupportedError("EGL found no display");

@@ -54,8 +54,8 @@ class GlBackend final : public Backend {
     // Mesa picks its driver once per process; say so rather than run another.
     const std::string wanted = options.device.empty() || !options.driver.empty() ? requestedMesaDriver(options) : "";
     if (!wanted.empty() && !rendererRunsOn(info_.name, wanted))
-      throw NotSupportedError("asked for Mesa's " + wanted + " but the context runs on '" + info_.name +
-                              "' (the driver is missing, or another was already loaded in this process)");
+      throw NotSupportedError("asked for Mesa's " + describeMesaDriver(wanted) + " but the context runs on '" +
+                              info_.name + "' (the driver is missing, or another was already loaded in this process)");
     programs_.emplace(gl_);
     bakedTextures_.emplace(gl_);
     cookieTextures_.emplace(gl_);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "backends/backend.h"
+#include "backends/scoped_environment.h"
 
 #include <memory>
 #include <string>
@@ -29,10 +30,25 @@ class GlContext {
 std::string requestedMesaDriver(const BackendOptions& options);
 bool validMesaDriverName(const std::string& driver);
 void selectMesaDriver(const std::string& driver);
+// The Vulkan driver under a Mesa driver that draws through Vulkan, pinned
+// while the GL context is created: for zink, the Vulkan loader's only driver
+// is lavapipe's manifest (vulkan::lavapipeDriver()), so gl-egl-zink runs on
+// lavapipe and nothing else, whatever other ICDs (a GPU's, SwiftShader) are
+// installed; and the loader's implicit device-selection layer is off, since
+// with one driver there is nothing to select, and zink's instance, which
+// enables the Wayland surface extension, makes it try a Wayland connection
+// (libwayland's "XDG_RUNTIME_DIR is invalid or not set" on stderr). Held
+// until the display is initialised: zink makes its Vulkan instance then.
+// Null for any other driver; NotSupportedError when lavapipe is not installed.
+std::unique_ptr<ScopedEnvironment> pinVulkanDriverUnder(const std::string& driver);
 // Whether a context whose GL_RENDERER is `renderer` runs on `driver`: the
 // name as a whole word, and for a layered driver (zink, virgl, d3d12) its
-// own name first, so zink over llvmpipe is not llvmpipe.
+// own name first, so zink over llvmpipe is not llvmpipe. zink counts only
+// over lavapipe, whose device is llvmpipe: "zink (llvmpipe (LLVM 15.0.6,
+// 256 bits))" in Mesa 22.3, "zink Vulkan 1.3(llvmpipe ...)" in later ones.
 bool rendererRunsOn(const std::string& renderer, const std::string& driver);
+// How messages name what `driver` asks for: "zink on lavapipe" for zink.
+std::string describeMesaDriver(const std::string& driver);
 
 // EGL: surfaceless platform with Mesa's software driver; with `--device`,
 // the EGL device platform and the device that index or name substring picks.

@@ -1,8 +1,9 @@
 #include "backends/vulkan/vulkan_device.h"
 
+#include "backends/scoped_environment.h"
+
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -39,38 +40,6 @@ std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return s;
 }
-
-// Points the loader at one ICD manifest while an instance is created (the
-// loader reads the variables when it scans for drivers, in vkCreateInstance),
-// then puts back what the environment held, so a later instance of the same
-// process sees the loader's own choice again.
-class ScopedDriverFiles {
- public:
-  explicit ScopedDriverFiles(const std::string& manifest) {
-    for (Saved& s : saved_) {
-      const char* old = std::getenv(s.name);
-      if (old) s.value = old;
-      ::setenv(s.name, manifest.c_str(), 1);
-    }
-  }
-  ~ScopedDriverFiles() {
-    for (const Saved& s : saved_) {
-      if (s.value) ::setenv(s.name, s.value->c_str(), 1);
-      else ::unsetenv(s.name);
-    }
-  }
-  ScopedDriverFiles(const ScopedDriverFiles&) = delete;
-  ScopedDriverFiles& operator=(const ScopedDriverFiles&) = delete;
-
- private:
-  struct Saved {
-    const char* name;
-    std::optional<std::string> value;
-  };
-  // VK_DRIVER_FILES is the loader's current name; VK_ICD_FILENAMES the one
-  // older loaders read (Debian 12's reads both).
-  Saved saved_[2] = {{"VK_DRIVER_FILES", std::nullopt}, {"VK_ICD_FILENAMES", std::nullopt}};
-};
 
 const NamedVulkanDriver* namedDriver(const std::string& name) {
   if (name.empty()) return nullptr;
@@ -115,8 +84,11 @@ VulkanInstance::VulkanInstance(bool validation, const std::string& driver) try
       .ppEnabledExtensionNames = extensions.data(),
   };
   {
-    std::optional<ScopedDriverFiles> onlyThisDriver;
-    if (driver_) onlyThisDriver.emplace(driver_->manifest);
+    // The loader reads its driver list when the instance is created; the
+    // environment is put back after, so a later instance of the same process
+    // sees the loader's own choice again.
+    std::optional<ScopedEnvironment> onlyThisDriver;
+    if (driver_) onlyThisDriver.emplace(onlyDriverVariables(driver_->manifest));
     instance_ = vk::raii::Instance(context_, info);
   }
   if (validating_) messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, log_->messengerCreateInfo());

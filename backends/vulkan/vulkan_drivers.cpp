@@ -19,6 +19,28 @@ const std::vector<NamedVulkanDriver>& namedDrivers() {
 
 }  // namespace
 
+const NamedVulkanDriver& lavapipeDriver() {
+  // Mesa names the manifest after the CPU it was built for (meson's
+  // host_machine.cpu()); Debian installs it in the loader's search path.
+#if defined(__x86_64__)
+  constexpr const char* kCpu = "x86_64";
+#elif defined(__aarch64__)
+  constexpr const char* kCpu = "aarch64";
+#elif defined(__i386__)
+  constexpr const char* kCpu = "i686";
+#else
+  constexpr const char* kCpu = "unknown-cpu";  // no such manifest: lavapipe is NotSupported
+#endif
+  static const NamedVulkanDriver lavapipe = {"lavapipe", "lavapipe",
+                                             std::string("/usr/share/vulkan/icd.d/lvp_icd.") + kCpu + ".json",
+                                             "mesa-vulkan-drivers", vk::DriverId::eMesaLlvmpipe};
+  return lavapipe;
+}
+
+std::vector<std::pair<std::string, std::string>> onlyDriverVariables(const std::string& manifest) {
+  return {{"VK_DRIVER_FILES", manifest}, {"VK_ICD_FILENAMES", manifest}};
+}
+
 const NamedVulkanDriver* findNamedVulkanDriver(std::string_view name) {
   for (const NamedVulkanDriver& d : namedDrivers())
     if (d.name == name) return &d;

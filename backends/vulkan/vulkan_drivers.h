@@ -9,6 +9,8 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace backends::vulkan {
 
@@ -25,5 +27,17 @@ const NamedVulkanDriver* findNamedVulkanDriver(std::string_view name);
 
 // "swiftshader", for messages that list what --driver accepts on Vulkan.
 std::string namedVulkanDriverList();
+
+// lavapipe, Mesa's Vulkan driver on llvmpipe: the one Vulkan driver that
+// zink (Mesa's OpenGL on Vulkan, the combination gl-egl-zink) draws through
+// (backends/gl/mesa_driver.cpp). Not a --driver of the Vulkan backend, whose
+// own choice is lavapipe on Debian already.
+const NamedVulkanDriver& lavapipeDriver();
+
+// The loader's variables that make `manifest` its only driver, for a
+// ScopedEnvironment (backends/scoped_environment.h) held while an instance
+// is created: VK_DRIVER_FILES, the loader's current name, and
+// VK_ICD_FILENAMES, the one older loaders read (Debian 12's reads both).
+std::vector<std::pair<std::string, std::string>> onlyDriverVariables(const std::string& manifest);
 
 }  // namespace backends::vulkan

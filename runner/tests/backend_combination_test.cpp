@@ -13,10 +13,10 @@ std::vector<std::string> suffixes(const std::vector<BackendCombination>& combina
   return names;
 }
 
-TEST(BackendCombination, NoNameMeansAllSixInTableOrder) {
+TEST(BackendCombination, NoNameMeansAllSevenInTableOrder) {
   EXPECT_EQ(suffixes(selectCombinations({})),
             (std::vector<std::string>{"vulkan", "gl-egl", "gl-osmesa", "gl-egl-softpipe", "gl-osmesa-softpipe",
-                                      "vulkan-swiftshader"}));
+                                      "vulkan-swiftshader", "gl-egl-zink"}));
 }
 
 TEST(BackendCombination, VulkanNamesTheLoadersOwnDriverAlone) {
@@ -30,12 +30,13 @@ TEST(BackendCombination, VulkanNamesTheLoadersOwnDriverAlone) {
   EXPECT_EQ(viaDriver[0].driver, "swiftshader");
   // A Vulkan driver's name moves no GL combination.
   EXPECT_EQ(suffixes(selectCombinations({"vulkan", "gl-egl"}, "swiftshader")),
-            (std::vector<std::string>{"vulkan-swiftshader", "gl-egl", "gl-egl-softpipe"}));
+            (std::vector<std::string>{"vulkan-swiftshader", "gl-egl", "gl-egl-softpipe", "gl-egl-zink"}));
   EXPECT_THROW(selectCombinations({"gl-egl"}, "swiftshader"), std::invalid_argument);
 }
 
 TEST(BackendCombination, ApiNameStandsForEveryDriverOfIt) {
-  EXPECT_EQ(suffixes(selectCombinations({"gl-egl"})), (std::vector<std::string>{"gl-egl", "gl-egl-softpipe"}));
+  EXPECT_EQ(suffixes(selectCombinations({"gl-egl"})),
+            (std::vector<std::string>{"gl-egl", "gl-egl-softpipe", "gl-egl-zink"}));
 }
 
 TEST(BackendCombination, SuffixPicksOneCombinationWithItsDriver) {
@@ -60,11 +61,15 @@ TEST(BackendCombination, DriverMakesTheGlCombinationsOnePerApiBackend) {
   EXPECT_EQ(suffixes(selectCombinations({}, "softpipe")),
             (std::vector<std::string>{"vulkan", "gl-egl-softpipe", "gl-osmesa-softpipe", "vulkan-swiftshader"}));
   EXPECT_EQ(suffixes(selectCombinations({"gl-egl"}, "llvmpipe")), (std::vector<std::string>{"gl-egl"}));
-  // A driver the table does not list keeps its name in the suffix.
+  // A pair the table does not list keeps its driver's name in the suffix;
+  // one it lists is the table's (gl-egl-zink).
   const auto zink = selectCombinations({"gl-osmesa"}, "zink");
   ASSERT_EQ(suffixes(zink), (std::vector<std::string>{"gl-osmesa-zink"}));
   EXPECT_EQ(zink[0].backend, "gl-osmesa");
   EXPECT_EQ(zink[0].driver, "zink");
+  EXPECT_EQ(suffixes(selectCombinations({}, "zink")),
+            (std::vector<std::string>{"vulkan", "gl-egl-zink", "gl-osmesa-zink", "vulkan-swiftshader"}));
+  EXPECT_EQ(suffixes(selectCombinations({"gl-egl-zink"})), (std::vector<std::string>{"gl-egl-zink"}));
   EXPECT_THROW(selectCombinations({"vulkan"}, "softpipe"), std::invalid_argument);
   // A combination that names its own driver may not be given another.
   EXPECT_THROW(selectCombinations({"gl-egl-softpipe"}, "llvmpipe"), std::invalid_argument);

@@ -1,7 +1,7 @@
 // The one table of backend combinations (backends/backend_combinations.def)
 // as C++ reads it and as CMake reads it (backends/backend_combinations.cmake,
 // which names ctest's tests and labels): two parsers of one file, which must
-// agree, and the five combinations of SPEC 10 written out by hand.
+// agree, and the seven combinations written out by hand.
 #include "backends/backend_combinations.h"
 
 #include <gtest/gtest.h>
@@ -13,13 +13,13 @@
 namespace backends {
 namespace {
 
-TEST(CombinationTable, TheSixOfSpec10InOrder) {
+TEST(CombinationTable, TheSevenInOrder) {
   std::vector<std::string> rows;
   for (const BackendCombination& c : backendCombinations()) rows.push_back(c.suffix + "=" + c.backend + "=" + c.driver);
   EXPECT_EQ(rows, (std::vector<std::string>{"vulkan=vulkan=", "gl-egl=gl-egl=llvmpipe", "gl-osmesa=gl-osmesa=llvmpipe",
                                             "gl-egl-softpipe=gl-egl=softpipe",
                                             "gl-osmesa-softpipe=gl-osmesa=softpipe",
-                                            "vulkan-swiftshader=vulkan=swiftshader"}));
+                                            "vulkan-swiftshader=vulkan=swiftshader", "gl-egl-zink=gl-egl=zink"}));
 }
 
 TEST(CombinationTable, CMakeReadsTheSameRows) {
@@ -46,6 +46,11 @@ TEST(CombinationTable, LookUps) {
   // own, and SwiftShader is named.
   EXPECT_EQ(findCombination("gl-egl", "")->suffix, "gl-egl");
   EXPECT_EQ(findCombination("gl-egl", "softpipe")->suffix, "gl-egl-softpipe");
+  EXPECT_EQ(findCombination("gl-egl", "zink")->suffix, "gl-egl-zink");
+  EXPECT_EQ(findCombination("gl-osmesa", "zink"), nullptr);
+  EXPECT_FALSE(findCombination("gl-egl-zink")->isSlowDriver());
+  // zink draws through lavapipe, which the vulkan combination times.
+  EXPECT_TRUE(findCombination("gl-egl-zink")->isSecondContextPath());
   EXPECT_EQ(findCombination("vulkan", "")->suffix, "vulkan");
   EXPECT_EQ(findCombination("vulkan", "softpipe"), nullptr);
   EXPECT_EQ(findCombination("vulkan", "swiftshader")->suffix, "vulkan-swiftshader");
@@ -56,7 +61,7 @@ TEST(CombinationTable, LookUps) {
   EXPECT_TRUE(findCombination("gl-osmesa")->takesMesaDriver());
   EXPECT_EQ(findCombination("gl-egl-softpipe")->identifier(), "gl_egl_softpipe");
   EXPECT_EQ(combinationSuffixList(),
-            "vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe, vulkan-swiftshader");
+            "vulkan, gl-egl, gl-osmesa, gl-egl-softpipe, gl-osmesa-softpipe, vulkan-swiftshader, gl-egl-zink");
 }
 
 }  // namespace

@@ -86,7 +86,8 @@ std::vector<ErrorCandidate> registerAll(const std::shared_ptr<RunState>& run) {
   registerFieldModes(registrar, field.shipped);
   if (run->secondContextPath()) {
     // The driver's features and curves are timed on its first path (gl-egl,
-    // gl-egl-softpipe); this path adds its light-path frames and a pipeline.
+    // gl-egl-softpipe, vulkan for zink's lavapipe); this path adds its
+    // light-path frames and a pipeline.
     registerFieldPipelines(registrar, field.pipeline);
     return registrar.errorCandidates();
   }
