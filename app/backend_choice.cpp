@@ -64,6 +64,16 @@ backends::BackendOptions backendOptions(const BackendArguments& args) {
     throw InputError("unknown --mutant '" + args.mutant + "'; expected one of: " + known);
   }
   options.variant.mutant = *mutant;
+  const auto admissible = shaders::admissibleFromName(args.admissible);
+  if (!admissible) {
+    std::string known = "none";
+    for (const auto& a : shaders::admissibleNames()) known += ", " + std::string(a.name);
+    throw InputError("unknown --admissible '" + args.admissible + "'; expected one of: " + known);
+  }
+  if (!shaders::admissibleRealisedOn(*admissible, args.backend))
+    throw backends::NotSupportedError("the admissible variant " + args.admissible + " is not realised on " +
+                                      args.backend + ": " + std::string(shaders::admissibleEntry(*admissible).what));
+  options.variant.admissible = *admissible;
   return options;
 }
 
@@ -73,7 +83,8 @@ std::string caseName(const std::string& scenePath, const BackendArguments& args)
   // a driver the table does not know keeps its name in the case, so two
   // such runs never share evidence.
   const std::string suffix = backends::combinationWithDriver(args.backend, args.driver).suffix;
-  return path.parent_path().filename().string() + "." + path.stem().string() + "." + suffix;
+  const std::string variant = args.admissible == "none" ? "" : "@" + args.admissible;
+  return path.parent_path().filename().string() + "." + path.stem().string() + variant + "." + suffix;
 }
 
 }  // namespace app

@@ -55,6 +55,9 @@ struct BackendArguments {
   // variant of the model (shaders/shader_variant.h), or every shader feature
   // on whatever the scene uses.
   std::string mutant = "none";
+  // --admissible: a deliberately different but legal implementation
+  // (SPEC 7's admissible variants, shaders/shader_interface.def).
+  std::string admissible = "none";
   bool fullShader = false;
   // --expect-driver (docs/vendors.md): the loaded device's name, driver or
   // driver version must contain this text, or the command fails (exit 4).

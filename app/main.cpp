@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
     // Test-only (docs/cli.md): never needed to run the suite as shipped.
     sub->add_option("--mutant", backend.mutant, "Test only: a deliberately wrong variant of the model")
         ->default_val("none");
+    sub->add_option("--admissible", backend.admissible,
+                    "Test only: a deliberately different but legal implementation (an admissible variant)")
+        ->default_val("none");
     sub->add_flag("--full-shader", backend.fullShader, "Test only: every shader feature on, whatever the scene uses");
     sub->add_option("--expect-driver", backend.expectDriver,
                     "Fail (exit 4) unless the loaded device's name, driver or version contains this text");
@@ -140,6 +143,18 @@ int main(int argc, char** argv) {
   runCmd->add_flag("--mutants-only", run.mutantsOnly, "Only the mutation check: exit 0 when every mutant is killed");
   runCmd->add_flag("--mutants-all-scenes", run.mutantsAllScenes,
                    "Check each mutant against every selected scene (the whole kill table), not only its killers");
+  // Admissible variants (SPEC 7): legal implementations that must pass every scene.
+  runCmd->add_option("--admissible", run.admissible,
+                     "Also run every selected scene under these admissible variants (repeatable; 'all' for every "
+                     "one): tests <group>.<name>@<variant>.<backend> that must pass");
+  runCmd->add_flag("--admissible-only", run.admissibleOnly,
+                   "Only the admissible variants' tests: exit 0 when every variant is sound");
+  runCmd->add_flag("--admissible-witnesses", run.admissibleWitnesses,
+                   "Check each admissible variant against its witnesses (suite/admissible_witnesses.def) alone, "
+                   "not every selected scene");
+  runCmd->add_flag("--sharpness", run.measureSharpness,
+                   "Bisect, for each scene, the smallest relative brightness error its comparison catches "
+                   "(results.json metrics)");
   runCmd->add_option("--evidence-limit", run.evidenceLimit,
                      "Failures that keep their evidence images; every failure keeps its numbers")
       ->default_val(50)

@@ -10,6 +10,9 @@ constexpr std::array kBackendStatuses = {BackendStatus::Ran, BackendStatus::NotS
 constexpr std::array kMutantStatuses = {MutantStatus::Killed, MutantStatus::Survived, MutantStatus::NotSupported,
                                         MutantStatus::Crash, MutantStatus::Timeout};
 
+constexpr std::array kAdmissibleStatuses = {AdmissibleStatus::Sound, AdmissibleStatus::Unsound,
+                                            AdmissibleStatus::Incomplete, AdmissibleStatus::NotSupported};
+
 }  // namespace
 
 std::string_view backendStatusName(BackendStatus status) {
@@ -49,6 +52,24 @@ std::optional<MutantStatus> parseMutantStatus(std::string_view name) {
 
 std::ostream& operator<<(std::ostream& out, MutantStatus status) { return out << mutantStatusName(status); }
 
+std::string_view admissibleStatusName(AdmissibleStatus status) {
+  switch (status) {
+    case AdmissibleStatus::Sound: return "sound";
+    case AdmissibleStatus::Unsound: return "unsound";
+    case AdmissibleStatus::Incomplete: return "incomplete";
+    case AdmissibleStatus::NotSupported: return verdictName(Verdict::NotSupported);
+  }
+  throw std::invalid_argument("admissibleStatusName: not an AdmissibleStatus");
+}
+
+std::optional<AdmissibleStatus> parseAdmissibleStatus(std::string_view name) {
+  for (const AdmissibleStatus status : kAdmissibleStatuses)
+    if (admissibleStatusName(status) == name) return status;
+  return std::nullopt;
+}
+
+std::ostream& operator<<(std::ostream& out, AdmissibleStatus status) { return out << admissibleStatusName(status); }
+
 // Switches without a default, as in verdict.cpp: -Wswitch names each of
 // them when a status is added.
 bool isRunFailure(BackendStatus status) {
@@ -67,6 +88,16 @@ bool isRunFailure(MutantStatus status) {
     case MutantStatus::Survived:
     case MutantStatus::Crash:
     case MutantStatus::Timeout: return true;
+  }
+  return true;
+}
+
+bool isRunFailure(AdmissibleStatus status) {
+  switch (status) {
+    case AdmissibleStatus::Sound:
+    case AdmissibleStatus::NotSupported: return false;
+    case AdmissibleStatus::Unsound:
+    case AdmissibleStatus::Incomplete: return true;
   }
   return true;
 }

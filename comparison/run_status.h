@@ -28,10 +28,22 @@ std::string_view mutantStatusName(MutantStatus status);  // "killed" | "survived
 std::optional<MutantStatus> parseMutantStatus(std::string_view name);
 std::ostream& operator<<(std::ostream& out, MutantStatus status);
 
+// An admissible variant (SPEC 7) on a backend, over its tests. Sound: every
+// scene passed (or failed as its expected-failures line says). Unsound: some
+// scene failed, a fault of lightcts (or of the driver, then listed).
+// Incomplete: some test crashed or timed out, so it proves nothing.
+// NotSupported: the backend is not present.
+enum class AdmissibleStatus { Sound, Unsound, Incomplete, NotSupported };
+
+std::string_view admissibleStatusName(AdmissibleStatus status);  // "sound" | "unsound" | "incomplete" | "NotSupported"
+std::optional<AdmissibleStatus> parseAdmissibleStatus(std::string_view name);
+std::ostream& operator<<(std::ostream& out, AdmissibleStatus status);
+
 // A status that makes `lightcts run` exit 1: a backend Error; a mutant that
-// Survived, Crashed or Timed out.
+// Survived, Crashed or Timed out; an admissible variant Unsound or Incomplete.
 bool isRunFailure(BackendStatus status);
 bool isRunFailure(MutantStatus status);
+bool isRunFailure(AdmissibleStatus status);
 
 // What it means to CI: Ran and Killed pass, NotSupported is a skip, a
 // backend Error and a mutant's Crash or Timeout are errors, Survived fails.

@@ -179,7 +179,7 @@ std::string referenceCacheKey(const std::string& sceneDigest, int frame, const r
 }
 
 bool cacheable(const reference::ReferenceOptions& options) {
-  return !options.keepExactValues && !options.keepToleranceTerms;
+  return !options.keepExactValues && !options.keepToleranceTerms && !options.keepLightPart;
 }
 
 reference::ReferenceImages cachedReference(const fs::path& directory, const std::string& key,

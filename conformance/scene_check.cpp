@@ -82,20 +82,38 @@ const lighting::Frame& SceneReferences::frame(int index) {
   return it->second;
 }
 
-const reference::ReferenceImages& SceneReferences::reference(int index, int subTexelBits, int subPixelBits) {
+std::tuple<int, int, int> SceneReferences::referenceKey(int index, int subTexelBits, int subPixelBits) const {
   // A device that reports fewer bits than the minimum is held to the minimum
   // (SPEC 7: "2^-4 ... unless the device reports more"). A scene without a
   // filtered texture has one reference whatever the bits: the minimum's.
   const bool filtered = reference::readsFilteredTextures(*prepared_);
   const int bits = filtered ? std::max(subTexelBits, kMinimumSubTexelBits) : kMinimumSubTexelBits;
   const int snapBits = std::max(subPixelBits, reference::tolerance::kMinimumSubPixelBits);
-  const std::tuple<int, int, int> key{index, bits, snapBits};
+  return {index, bits, snapBits};
+}
+
+reference::ReferenceOptions SceneReferences::optionsOf(const std::tuple<int, int, int>& key) const {
+  reference::ReferenceOptions options = referenceOptionsFor(prepared_->scene);
+  options.filterWeightPrecision = std::ldexp(1.0, -std::get<1>(key));
+  options.subPixelPrecisionBits = std::get<2>(key);
+  return options;
+}
+
+const reference::ReferenceImages& SceneReferences::reference(int index, int subTexelBits, int subPixelBits) {
+  const auto key = referenceKey(index, subTexelBits, subPixelBits);
   auto it = references_.find(key);
-  if (it == references_.end()) {
-    reference::ReferenceOptions options = referenceOptionsFor(prepared_->scene);
-    options.filterWeightPrecision = std::ldexp(1.0, -bits);
-    options.subPixelPrecisionBits = snapBits;
-    it = references_.emplace(key, render(index, options)).first;
+  if (it == references_.end()) it = references_.emplace(key, render(index, optionsOf(key))).first;
+  return it->second;
+}
+
+const imaging::Image& SceneReferences::lightPart(int index, int subTexelBits, int subPixelBits) {
+  const auto key = referenceKey(index, subTexelBits, subPixelBits);
+  auto it = lightParts_.find(key);
+  if (it == lightParts_.end()) {
+    reference::ReferenceOptions options = optionsOf(key);
+    options.valueOnly = true;
+    options.keepLightPart = true;
+    it = lightParts_.emplace(key, std::move(render(index, options).lightPart)).first;
   }
   return it->second;
 }
@@ -158,6 +176,14 @@ SceneCheck checkScene(SceneReferences& references, backends::Backend& backend, c
     frameCheck.comparison = timed(check.timings.compare, [&] {
       return comparison::compareImages(result, ref, scene.expect, options.worstCount);
     });
+    if (options.measureSharpness && !scene.expect.expectFail) {
+      const CaughtScale caught = smallestCaughtScale(
+          result, references.lightPart(f, device.subTexelPrecisionBits, device.subPixelPrecisionBits), ref,
+          scene.expect);
+      if (!check.caughtScale) check.caughtScale = caught;
+      check.caughtScale->brighter = std::min(check.caughtScale->brighter, caught.brighter);
+      check.caughtScale->darker = std::min(check.caughtScale->darker, caught.darker);
+    }
     // Animated scenes: the popping score; shadow maps: their error against
     // ray-traced shadows (SPEC 3.9 --ideal), information beside the verdict.
     if (animated || frame.shadows.any()) {

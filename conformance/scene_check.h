@@ -4,6 +4,7 @@
 // checkScene, so a verdict means the same thing in ctest and in a report.
 #pragma once
 
+#include "conformance/brightness_sharpness.h"
 #include "backends/backend.h"
 #include "comparison/comparison_report.h"
 #include "comparison/image_comparison.h"
@@ -57,6 +58,9 @@ class SceneReferences {
   // SPEC 6 --ideal, for the popping score; it keeps the lightmaps whatever
   // `expect.against` says, so the baked part cancels and only budgets remain.
   const reference::ReferenceImages& ideal(int frame);
+  // What the lights add to each pixel of reference(frame, ...)
+  // (ReferenceImages::lightPart): the sharpness's scale mutant scales it.
+  const imaging::Image& lightPart(int frame, int subTexelBits, int subPixelBits);
   // Time spent on references so far: rendering them, or reading them from the cache.
   double referenceMilliseconds() const { return referenceMs_; }
   int cacheHits() const { return cacheHits_; }  // references read from the cache so far
@@ -70,6 +74,9 @@ class SceneReferences {
   // never builds the scene's BVH.
   const reference::ReferenceRenderer& renderer();
   reference::ReferenceImages render(int frame, const reference::ReferenceOptions& options);
+  // reference()'s cache key, bits raised to the minimum, and its options.
+  std::tuple<int, int, int> referenceKey(int frame, int subTexelBits, int subPixelBits) const;
+  reference::ReferenceOptions optionsOf(const std::tuple<int, int, int>& key) const;
 
   std::shared_ptr<const lighting::PreparedScene> prepared_;
   std::optional<ReferenceCaching> caching_;
@@ -77,6 +84,7 @@ class SceneReferences {
   std::map<int, lighting::Frame> frames_;
   std::map<std::tuple<int, int, int>, reference::ReferenceImages> references_;  // by frame, sub-texel and sub-pixel bits
   std::map<int, reference::ReferenceImages> ideals_;
+  std::map<std::tuple<int, int, int>, imaging::Image> lightParts_;  // keyed as references_
   double referenceMs_ = 0;
   int cacheHits_ = 0;
 };
@@ -121,6 +129,10 @@ struct SceneCheck {
   // back and the reference's (comparison::ShadowMapEvidence).
   comparison::ShadowMapEvidence evidenceShadowMaps;
   StageTimings timings;
+  // With CheckOptions::measureSharpness, the smallest brightness error each
+  // way any frame's comparison catches (brightness_sharpness.h); none for an
+  // expect_fail scene.
+  std::optional<CaughtScale> caughtScale;
   const FrameCheck& evidence() const;  // the FrameCheck of evidenceFrame
 };
 
@@ -135,6 +147,9 @@ struct CheckOptions {
   // reference and tolerance (the mode drops no light that reaches a pixel).
   // useLightClusters throws std::invalid_argument for a scene it cannot draw.
   std::optional<lighting::ClusterGridSpec> clustered;
+  // Bisect, per frame, the smallest brightness error the comparison catches
+  // (SceneCheck::caughtScale): the suite's sharpness (`run --sharpness`).
+  bool measureSharpness = false;
 };
 
 // Throws what the backend throws (NotSupportedError, DriverError).

@@ -4,6 +4,7 @@
 #include "lighting/light_math.h"
 #include "lighting/shadow_packing.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -48,7 +49,7 @@ GpuLight packGpuLight(const Frame& frame, int lightIndex, double weight) {
   return g;
 }
 
-GpuFrameBlock packFrameBlock(const Frame& frame) {
+GpuFrameBlock packFrameBlock(const Frame& frame, const DeviceGrid& grid) {
   GpuFrameBlock block;
   block.viewProjection = toGpuMat4(frame.view.cameraRelativeViewProjection());
   block.ambient = vec4(frame.scene().ambient, 0.0);
@@ -58,6 +59,9 @@ GpuFrameBlock packFrameBlock(const Frame& frame) {
   const PackedLights& packed = frame.selection.packed;
   const bool legacy = frame.scene().pipeline.profile == Profile::Legacy;
   block.lightCounts = {int(packed.directional.size()), int(packed.other.size()), legacy ? 1 : 0, frame.clusters ? 1 : 0};
+  block.rasterGrid = {float(frame.view.width), float(frame.view.height), std::ldexp(1.0f, grid.subPixelBits),
+                      grid.framebufferYAgainstNdc};
+  block.filterGrid = {std::ldexp(1.0f, grid.subTexelBits), 0.0f, 0.0f, 0.0f};
   if (frame.clusters) {
     const ClusterGrid& grid = frame.clusters->grid;
     block.clusterGrid = {grid.tilesX, grid.tilesY, grid.slices, grid.tileSize};
@@ -114,6 +118,11 @@ GpuObjectBlock packObjectBlock(const Frame& frame, int object) {
     block.lightList.w = 1;
     for (int k = 0; k < int(list.indices.size()); ++k) index(k) = list.indices[k];
   }
+  // Every vertex in front of the camera: the bounding sphere wholly past the
+  // camera plane (an orthographic camera's w is 1 everywhere).
+  const bool inFront = frame.view.camera.projection == Projection::Orthographic ||
+                       frame.view.viewDepth(geometry.bounds.centre) > geometry.bounds.radius;
+  block.raster = {inFront ? 1 : 0, 0, 0, 0};
   if (obj.mesh.type == MeshType::Plane) {
     block.lightmapTransform = {float(1.0 / obj.mesh.planeSizeX), float(1.0 / obj.mesh.planeSizeZ), 0.5f, 0.5f};
   }

@@ -71,8 +71,15 @@ struct GpuFrameBlock {
   // branch at this offset from its own, which the shader compiler cannot
   // fold (shaders/light_data.glsl, opaque()).
   GpuIVec4 opaqueZero;
+  // Read by the admissible variants alone (shaders/admissible.glsl), never
+  // by the model. xy: the image's size in pixels (packFrameBlock); z:
+  // 2^subPixelPrecisionBits and w: the framebuffer's y direction against NDC
+  // y, +1 on OpenGL and -1 under Vulkan's flipped viewport (the backend
+  // fills both: they are the device's and the API's).
+  GpuVec4 rasterGrid;
+  GpuVec4 filterGrid;  // x: 2^subTexelPrecisionBits (the backend fills it)
 };
-static_assert(sizeof(GpuFrameBlock) == 4560);
+static_assert(sizeof(GpuFrameBlock) == 4592);
 
 // Binding 1: per object.
 struct GpuObjectBlock {
@@ -83,8 +90,12 @@ struct GpuObjectBlock {
   GpuIVec4 lightIndices[2];  // the first min(count, 8) packed indices, -1 past the end
   GpuVec4 lightmapTransform; // u = x_local * x + z, v = z_local * y + w (SPEC 3.6)
   GpuVec4 material;       // x: metallic, y: smoothness, z: 1 for the srp BRDF (SPEC 3.8), 0 Lambert
+  // x: 1 when every vertex of the object lies in front of the camera this
+  // frame (clip w > 0), 0 otherwise: the snapping variants snap only such an
+  // object, since a vertex stage snaps before clipping (shaders/admissible.glsl).
+  GpuIVec4 raster;
 };
-static_assert(sizeof(GpuObjectBlock) == 224);
+static_assert(sizeof(GpuObjectBlock) == 240);
 
 // Vertex data: local position and normal, float32, interleaved.
 struct GpuVertex {
@@ -97,7 +108,16 @@ static_assert(sizeof(GpuVertex) == 24);
 // it: every block that carries a matrix packs it through this.
 GpuMat4 toGpuMat4(const glm::dmat4& m);
 
-GpuFrameBlock packFrameBlock(const Frame& frame);
+// What the admissible variants read of the device and of the API that draws
+// (GpuFrameBlock::rasterGrid's z and w, filterGrid's x): the backend knows
+// them, the frame does not.
+struct DeviceGrid {
+  int subPixelBits = 4;
+  int subTexelBits = 4;
+  float framebufferYAgainstNdc = 1;  // +1 OpenGL, -1 Vulkan's flipped viewport
+};
+
+GpuFrameBlock packFrameBlock(const Frame& frame, const DeviceGrid& grid = {});
 // One light as FrameBlock holds it (also the deferred light pass's block).
 // `weight`: the light's fade weight (lighting/light_fade.h); it scales
 // finalColor in double before the one rounding to float.

@@ -57,11 +57,18 @@ std::vector<ShadowPassView> shadowPassViews(const Frame& frame) {
   auto add = [&](const ShadowProjection& projection, int slot) {
     for (int face = 0; face < int(projection.views.size()); ++face)
       views.push_back({slot, face, projection.spec.resolution,
-                       toGpuMat4(projection.views[face].clipFromCameraRelative(camera))});
+                       toGpuMat4(projection.views[face].clipFromCameraRelative(camera)),
+                       !projection.views[face].perspective});
   };
   for (int s = 0; s < int(frame.shadows.maps.size()); ++s) add(frame.shadows.maps[s], s);
   for (int s = 0; s < int(frame.shadows.cubes.size()); ++s) add(frame.shadows.cubes[s], kMaxShadowMaps + s);
   return views;
+}
+
+GpuShadowPassBlock packShadowPassBlock(const ShadowPassView& view, int subPixelBits) {
+  const float size = float(view.resolution);
+  return {view.clipFromCameraRelative,
+          {size, size, view.snappable ? std::ldexp(1.0f, subPixelBits) : 0.0f, 1.0f}};
 }
 
 }  // namespace lighting

@@ -49,14 +49,27 @@ struct ShadowPassView {
   int face = 0;   // cube face 0..5 (+X, -X, +Y, -Y, +Z, -Z); 0 for a 2D map
   int resolution = 0;
   GpuMat4 clipFromCameraRelative;
+  // Whether the snapping admissible variants may move its vertices: an
+  // orthographic view's vertices all have w = 1, so a clipped polygon's
+  // vertices move no more than theirs; a perspective view's may lie behind
+  // the light, whose moves would move the clipped vertices without bound
+  // (shaders/admissible.glsl, snappedClipPosition).
+  bool snappable = false;
 };
 std::vector<ShadowPassView> shadowPassViews(const Frame& frame);
 
 // std140, the depth-only pass's per-view block (shaders/shadow_caster.vert).
 struct GpuShadowPassBlock {
   GpuMat4 clipFromCameraRelative;  // ShadowPassView::clipFromCameraRelative
+  // The map's grid for the snapping admissible variants, as
+  // GpuFrameBlock::rasterGrid: resolution twice, 2^subPixelPrecisionBits
+  // (0 where the view is not snappable), +1 (neither backend flips a map's viewport).
+  GpuVec4 rasterGrid;
 };
-static_assert(sizeof(GpuShadowPassBlock) == 64);
+static_assert(sizeof(GpuShadowPassBlock) == 80);
+
+// One view's block on a device with `subPixelBits` sub-pixel bits.
+GpuShadowPassBlock packShadowPassBlock(const ShadowPassView& view, int subPixelBits);
 
 // GpuLight::spotAngles.z: a mixed light's shadow-mask channel 0..3 (SPEC
 // 3.5), a real-time light's shadow block slot + kShadowSlotBase (SPEC 3.9),

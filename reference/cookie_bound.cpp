@@ -31,7 +31,7 @@ CookieBound cookieWithBound(const Light& light, const Vec3& p, double positionEr
   }
   // The weights' precision and the blend's roundings (as for the lightmaps).
   const double fromWeights = tol::kFilterWeightErrorsPerSample * weightPrecision * spread;
-  const double fromBlend = tol::kFilterBlendRoundingSteps * tol::kUnitRoundoff * magnitude;
+  const double fromBlend = tol::kFilterBlendRoundingSteps * tol::kStepRoundoff * magnitude;
   // The coordinate's error: the lookup redone positionError away.
   double fromCoordinate = 0;
   for (int axis = 0; axis < 3; ++axis)

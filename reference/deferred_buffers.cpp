@@ -26,17 +26,19 @@ double decodedLightSum(DeferredBuffer buffer, double lightSum) {
 }
 
 double hdr16BlendBound(double lightSum, int contributing) {
-  // Each contributing blend rounds its source (2^-11 c_j) and the new sum
-  // (2^-11 s_j <= 2^-11 S, the terms being >= 0), each with the flush floor.
+  // Each contributing blend rounds its source (2^-10 c_j) and the new sum
+  // (2^-10 s_j <= 2^-10 S, the terms being >= 0), each with the flush floor.
   const double k = contributing;
-  return (k + 1.0) * tol::kHalfUnitRoundoff * std::abs(lightSum) + 2.0 * k * tol::kHalfFlushFloor;
+  return (k + 1.0) * tol::kHalfRounding * std::abs(lightSum) + 2.0 * k * tol::kHalfFlushFloor;
 }
 
 double ldr8DecodeBound(double lightSum, int contributing, double sumBound) {
   // Nothing added, and no term that float arithmetic could make non-zero:
-  // the clear value 1 stays exact and decodes to 0.
-  if (contributing <= 0 && sumBound <= 0) return 0.0;
-  const double u = tol::kUnitRoundoff;
+  // the clear value 1 stays exact, and log2(1) is 0 within log2's absolute
+  // 2^-21 inside [0.5, 2] ("Precision of GLSL.std.450 Instructions"): the
+  // decode's error alone.
+  if (contributing <= 0 && sumBound <= 0) return tol::kLdr8DecodeAbsError;
+  const double u = tol::kUnitRoundoff, step = tol::kStepRoundoff;
   // A term that is exactly 0 here may reach the GPU as a tiny positive value
   // (within sumBound): at least one blend.
   const double k = std::max(contributing, 1);
@@ -44,7 +46,7 @@ double ldr8DecodeBound(double lightSum, int contributing, double sumBound) {
   // The sum's own error e moves the encoded value within
   // [2^-(S+e), 2^-(S-e)] (exactly, not linearised), then exp2's ULPs and one
   // product per blend, relative; a UNORM target clamps at 1.
-  const double arithmetic = 2.0 * u * (tol::kExp2Ulps * k + tol::kExp2UlpsPerUnitArgument * lightSum) + k * u;
+  const double arithmetic = 2.0 * u * (tol::kExp2Ulps * k + tol::kExp2UlpsPerUnitArgument * lightSum) + k * step;
   const double low = std::exp2(-(lightSum + sumBound)) * (1.0 - arithmetic);
   const double high = std::min(1.0, std::exp2(-(lightSum - sumBound)) * (1.0 + arithmetic));
   // The first blend lands on the exact clear value 1: one conversion; every
@@ -63,7 +65,7 @@ double ldr8DecodeBound(double lightSum, int contributing, double sumBound) {
 }
 
 double reconstructionPositionError(const CameraView& view, const Vec3& p, double vertexSnap) {
-  const double u = tol::kUnitRoundoff;
+  const double u = tol::kStepRoundoff;
   const Camera& c = view.camera;
   const Vec3 offset = p - c.position;
   const double distance = glm::length(offset);

@@ -1,6 +1,8 @@
 #include "reference/light_evaluation.h"
 
 #include "reference/cookie_bound.h"
+#include "reference/light_terms.h"
+#include "reference/surface_inputs.h"
 #include "reference/shadow_ray.h"
 #include "reference/specular_bound.h"
 #include "reference/tolerance_model.h"
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace reference {
 
@@ -50,13 +53,6 @@ LightEvaluator::LightEvaluator(const Scene& scene, Profile profile, const std::v
 
 namespace {
 
-// SPEC 3.10: the radiance `term` (bound `termBound`) times the light's cookie
-// at p, whose float32 lookup is off by at most cookie.errorBound.
-void applyCookie(const CookieBound& cookie, Vec3& term, Vec3& termBound) {
-  termBound = termBound * cookie.value + term * cookie.errorBound + term * (cookie.value * tol::kUnitRoundoff);
-  term *= cookie.value;
-}
-
 // SPEC 3.8: the light's radiance `term` (bound `termBound`) times the lobe in
 // direction L, whose float32 direction error is `lightError`.
 void addSpecular(const LobeAtPoint& lobe, const Vec3& N, const Vec3& L, const VectorError& lightError, const Vec3& term,
@@ -66,7 +62,7 @@ void addSpecular(const LobeAtPoint& lobe, const Vec3& N, const Vec3& L, const Ve
   const Vec3 specular = term * s.value;
   sum.specular += specular;
   sum.specularBound += termBound * s.value + term * s.errorBound +
-                       specular * (tol::kSpecularTermSteps * tol::kUnitRoundoff);
+                       specular * (tol::kSpecularTermSteps * tol::kStepRoundoff);
 }
 
 }  // namespace
@@ -81,14 +77,14 @@ struct ShadowFactor {
 };
 
 ShadowFactor LightEvaluator::shadowAt(const Prepared& light, const Vec3& p, const Vec3& N,
-                                                      double positionError, const ShadowReceiver& receiver) const {
+                                                      const LookupError& error, const ShadowReceiver& receiver) const {
   ShadowFactor f;
   double s = 1, sLo = 1, sHi = 1;
   if (light.idealShadowLight) {
     // SPEC 3.9 `--ideal` is SPEC 3.6's visibility ray (shadow_ray.h).
     s = sLo = sHi = lightVisibility(*idealVisibility_, *light.idealShadowLight, p, N);
   } else {
-    const ShadowLookup look = light.shadowMap->lookup(p, N, {positionError}, filterWeightPrecision_);
+    const ShadowLookup look = light.shadowMap->lookup(p, N, error, filterWeightPrecision_);
     s = look.s;
     sLo = look.lo;
     sHi = look.hi;
@@ -113,26 +109,59 @@ ShadowFactor LightEvaluator::shadowAt(const Prepared& light, const Vec3& p, cons
 
 namespace {
 
-// The light's `term` (bound `termBound`) times its shadowAtten: the bound
-// widens by the term times the span the admissible lookups allow (SPEC 3.9).
-void applyShadow(const ShadowFactor& shadow, Vec3& term, Vec3& termBound, LightSum& sum) {
-  const bool adds = term.x > 0 || term.y > 0 || term.z > 0;
-  if (adds) {
-    if (!sum.shadowed || shadow.sHi - shadow.sLo > sum.widestShadowSpan) {
-      sum.widestShadowSpan = shadow.sHi - shadow.sLo;
-      sum.widestShadowLo = shadow.sLo;
-      sum.widestShadowHi = shadow.sHi;
-    }
-    sum.shadowed = true;
+using terms::Vec3Of;
+
+Vec3Of<FloatBound> uploaded(const Vec3& v) {
+  return {FloatBound::uploaded(v.x), FloatBound::uploaded(v.y), FloatBound::uploaded(v.z)};
+}
+
+// An input whose float may be `error` off per component, and whose exact
+// value ranges `spread` either side over the snapping square.
+Vec3Of<FloatBound> boundedInput(const Vec3& v, double error, double spread) {
+  return {FloatBound::input(v.x, error, v.x - spread, v.x + spread),
+          FloatBound::input(v.y, error, v.y - spread, v.y + spread),
+          FloatBound::input(v.z, error, v.z - spread, v.z + spread)};
+}
+
+Vec3Of<double> exact(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 valueOf(const Vec3Of<FloatBound>& v) { return {v.x.value, v.y.value, v.z.value}; }
+Vec3 errorOf(const Vec3Of<FloatBound>& v) { return {v.x.error, v.y.error, v.z.error}; }
+
+// SPEC 3.5's shadowMask as shadowMaskAttenuation computes it: mix(1, m, s),
+// inherited from 1 (1 - s) + m s, with the filtered mask's error; exactly 1
+// for a light without a channel.
+FloatBound maskFactor(double strength, const ShadowMaskAtPoint* mask, int channel) {
+  if (!mask || channel < 0) return FloatBound(1.0);
+  const FloatBound s = FloatBound::uploaded(strength);
+  const FloatBound m = FloatBound::input(mask->value[channel], mask->error[channel]);
+  return FloatBound(1.0) * (FloatBound(1.0) - s) + m * s;
+}
+
+// The light's textures as lightTextureAttenuation gives them: the cookie
+// (SPEC 3.10, its value and bound from cookie_bound.h) times the real-time
+// shadow (SPEC 3.9: any value of the admissible interval [lo, hi] the
+// lookups allow, and the fade's error), one product.
+FloatBound textureFactor(const CookieBound* cookie, const ShadowFactor* shadow) {
+  const FloatBound c = cookie ? FloatBound::input(cookie->value, cookie->errorBound) : FloatBound(1.0);
+  if (!shadow) return c;
+  const double highest = std::max(shadow->hi, shadow->value);
+  const FloatBound s =
+      FloatBound::input(shadow->value,
+                        (shadow->hi - shadow->lo) + shadow->fadeError + highest * tol::kShadowAttenuationSteps * tol::kStepRoundoff,
+                        std::min(shadow->lo, shadow->value), highest);
+  return c * s;
+}
+
+// SPEC 3.9's cap on ambiguity counts the pixels where a shadowed light adds
+// light (its unshadowed term > 0), with the widest of their intervals.
+void noteShadow(const ShadowFactor& shadow, bool adds, LightSum& sum) {
+  if (!adds) return;
+  if (!sum.shadowed || shadow.sHi - shadow.sLo > sum.widestShadowSpan) {
+    sum.widestShadowSpan = shadow.sHi - shadow.sLo;
+    sum.widestShadowLo = shadow.sLo;
+    sum.widestShadowHi = shadow.sHi;
   }
-  // A correct float32 evaluation may use any admissible shadowAtten, up to
-  // the interval's top: the unshadowed term's own error and the roundings
-  // scale with that, not with the reference's value.
-  const double highest = std::max(shadow.hi, shadow.value);
-  termBound = termBound * highest +
-              term * ((shadow.hi - shadow.lo) + shadow.fadeError +
-                      highest * (tol::kShadowAttenuationSteps * tol::kUnitRoundoff));
-  term *= shadow.value;
+  sum.shadowed = true;
 }
 
 }  // namespace
@@ -140,122 +169,146 @@ void applyShadow(const ShadowFactor& shadow, Vec3& term, Vec3& termBound, LightS
 void LightEvaluator::accumulate(const std::vector<int>& lights, const Vec3& p, const Vec3& N,
                                 const PositionContext& where, LightSum& sum, const ShadowMaskAtPoint* mask,
                                 const LobeAtPoint* lobe, const ShadowReceiver* receiver) const {
-  const double u = tol::kUnitRoundoff;
-  const double pointMagnitude = glm::length(p - where.camera) + where.objectExtent;
+  const double u = tol::kUnitRoundoff, step = tol::kStepRoundoff;
+  // What the fragment stage gets: the camera-relative p and the unit N, each
+  // off by its inputs' bound (reference/surface_inputs.h); p ranges over the
+  // snapped square (PositionContext::snapMove).
+  const Vec3 relative = p - where.camera;
+  const SurfaceErrors inputs = where.inputs     ? *where.inputs
+                               : where.valueOnly ? SurfaceErrors{}
+                                                 : inputErrorsOfMagnitude(glm::length(relative) + where.objectExtent);
+  // The deferred light pass does not interpolate p: it rebuilds it from the
+  // G-buffer's depth, off by the reconstruction's error alone.
+  const bool rebuilt = where.reconstructionError > 0;
+  const double positionError = rebuilt ? where.reconstructionError : inputs.position;
+  const Vec3Of<FloatBound> nBound = boundedInput(N, inputs.normal, inputs.normal);
+  // The position error as a length, for the cookie and shadow lookups (the
+  // reconstruction's is one already).
+  const double pointError = rebuilt ? positionError : std::sqrt(3.0) * positionError;
   Vec3 absoluteSum(0.0);
   for (int index : lights) {
     const Prepared& light = lights_[index];
     ++sum.evaluations;
-    // SPEC 3.5: shadowMask = lerp(1, mask[c], s). A filter error e in mask[c]
-    // moves it by s e; the lerp and its product add kShadowMaskRoundingSteps.
-    double shadowMask = 1, shadowMaskError = 0, maskRounding = 0;
-    if (mask && light.shadowMaskChannel >= 0) {
-      const int c = light.shadowMaskChannel;
-      shadowMask = 1.0 + light.shadowStrength * (mask->value[c] - 1.0);
-      shadowMaskError = light.shadowStrength * mask->error[c];
-      maskRounding = tol::kShadowMaskRoundingSteps * u;
+    const FloatBound shadowMask = maskFactor(light.shadowStrength, mask, light.shadowMaskChannel);
+    const Vec3 towardLight = light.directional ? light.towardLight : light.position - p;
+    const double distance = std::max(glm::length(towardLight), std::sqrt(kMinDistanceSquared));
+    // Where the lookups see the point: its own error, the light's uploaded
+    // position's (one rounding per component) for a local light.
+    const Vec3 lightRelative = light.position - where.camera;
+    const double lookupError =
+        pointError + (light.directional ? 0.0 : std::sqrt(3.0) * u * glm::length(lightRelative));
+    std::optional<CookieBound> cookie;
+    if (light.cookieLight) {
+      // A directional tiling is anchored at the world origin; a
+      // camera-relative lookup adds the camera's share in double
+      // (docs/tolerances.md "Cookies").
+      const double over = light.directional ? glm::length(relative) : distance;
+      cookie = cookieWithBound(*light.cookieLight, p, lookupError + tol::kCookieCoordinateSteps * step * over,
+                               filterWeightPrecision_);
     }
-    if (light.directional) {
-      // SPEC 3.1: A * finalColor * saturate(dot(N, L)) * shadowMask.
-      const double nl = saturate(glm::dot(N, light.towardLight));
-      Vec3 term = light.finalColor * (nl * shadowMask);
-      Vec3 termBound = term * (tol::kRoundingStepsPerLightTerm * u + maskRounding) +
-                       light.finalColor * (shadowMask * tol::kUnitDotAbsError + nl * shadowMaskError);
-      if (light.cookieLight) {
-        // The tiling is anchored at the world origin; a camera-relative
-        // lookup adds the camera's share in double (docs/tolerances.md "Cookies").
-        const double distance = glm::length(p - where.camera);
-        const double positionError = tol::kPositionRoundingSteps * u * pointMagnitude + where.reconstructionError +
-                                     tol::kCookieCoordinateSteps * u * distance;
-        applyCookie(cookieWithBound(*light.cookieLight, p, positionError, filterWeightPrecision_), term, termBound);
-      }
-      if (receiver && (light.shadowMap || light.idealShadowLight)) {
-        const double positionError = tol::kPositionRoundingSteps * u * pointMagnitude + where.reconstructionError;
-        applyShadow(shadowAt(light, p, N, positionError, *receiver), term, termBound, sum);
-      }
+    std::optional<ShadowFactor> shadow;
+    if (receiver && (light.shadowMap || light.idealShadowLight))
+      shadow = shadowAt(light, p, N, {lookupError}, *receiver);
+    const FloatBound textures = textureFactor(cookie ? &*cookie : nullptr, shadow ? &*shadow : nullptr);
+
+    // The radiance, operation for operation as the shader evaluates it
+    // (shaders/light_terms.glsl through reference/light_terms.h): its exact
+    // value and its float32 bound in one evaluation, or the exact value alone.
+    if (where.valueOnly) {
+      const double c = cookie ? cookie->value : 1.0, s = shadow ? shadow->value : 1.0;
+      const Vec3Of<double> exactRadiance =
+          light.directional
+              ? terms::directionalRadiance(exact(light.finalColor), exact(light.towardLight), shadowMask.value * (c * s),
+                                           exact(N))
+              : terms::localRadiance(exact(light.finalColor), exact(lightRelative), light.invRangeSq,
+                                     exact(light.spotDirection), light.spot.a, light.spot.b, shadowMask.value, c * s,
+                                     exact(relative), exact(N));
+      const Vec3 term(exactRadiance.x, exactRadiance.y, exactRadiance.z);
       sum.value += term;
       sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
-      absoluteSum += term;
-      sum.errorBound += termBound;
-      // L = float(-direction): one rounding per component, in length and direction.
-      const VectorError uploaded{tol::kNormalizedDirectionSteps * u, tol::kNormalizedDirectionSteps * u};
-      if (lobe) addSpecular(*lobe, N, light.towardLight, uploaded, term, termBound, sum);
+      if (lobe) addSpecular(*lobe, N, light.directional ? light.towardLight : towardLight * (1.0 / distance),
+                            VectorError{}, term, Vec3(0.0), sum);
       continue;
     }
-    // SPEC 3.2.
-    const Vec3 ray = light.position - p;
-    const double distSqr = std::max(glm::dot(ray, ray), kMinDistanceSquared);
-    const Vec3 L = ray * (1.0 / std::sqrt(distSqr));
-    const double nl = saturate(glm::dot(N, L));
-    // rangeAtt and spotAtt are lighting::rangeAttenuation and spotAttenuation
-    // (light_math.cpp) written out operation for operation, so they give the
-    // same doubles: inlined because the error bound below needs the
-    // intermediates q, g and s, which those functions square away. A change to
-    // either formula there must be made here too.
-    const double q = distSqr * light.invRangeSq;
-    const double g = saturate(1.0 - q * q);
-    const double rangeAtt = g * g;
-    const double sRaw = glm::dot(light.spotDirection, L) * light.spot.a + light.spot.b;
-    const double s = saturate(sRaw);
-    const double spotAtt = s * s;
-    const double falloff = shadowMask * rangeAtt / distSqr;
-    Vec3 term = light.finalColor * (nl * spotAtt * falloff);
-
-    // First-order error of the same formula in float32 (docs/tolerances.md):
-    // the ray is off by the position error of both ends; that turns L by up
-    // to rayError/d and changes distSqr by 2 rayError/d relative.
-    const double distance = std::sqrt(distSqr);
-    const double rayError = tol::kPositionRoundingSteps * u *
-                                (pointMagnitude + glm::length(light.position - where.camera)) +
-                            where.reconstructionError;
-    const double directionError = std::min(1.0, tol::kUnitDotAbsError + rayError / distance);
-    const double distSqrRelError = tol::kRoundingStepsPerLightTerm * u + std::min(1.0, 2.0 * rayError / distance);
-    const double baseMagnitude = shadowMask * rangeAtt / distSqr;
-    // Each product below is one factor's error times the other factors. A
-    // factor at its kink (nl = 0 on a surface the light lies in, rangeAtt = 0
-    // just past the range, spotAtt = 0 just outside the cone) is 0 in double
-    // and may be above 0 where float32 and snapping put the point, so the
-    // product of two such errors is all the error there is: the factors that
-    // multiply an error are taken at the high end of what they may be over
-    // the arithmetic's error and the snapped point (each is monotone in its
-    // input).
-    const double moved = where.snapMove / distance;
-    const double directionHigh = std::min(1.0, directionError + moved);
-    const double distSqrRelHigh = std::min(1.0, distSqrRelError + 2.0 * moved);
-    const double qLow = q * (1.0 - distSqrRelHigh);
-    const double gHigh = saturate(1.0 - qLow * qLow);
-    const double sHigh = saturate(sRaw + std::abs(light.spot.a) * directionHigh);
-    const double nlHigh = std::min(1.0, nl + directionHigh);
-    const double spotHigh = sHigh * sHigh;
-    // The shader clamps distSqr at kMinDistanceSquared, so its low end does too.
-    const double distSqrLow = std::max(distSqr * (1.0 - distSqrRelHigh), kMinDistanceSquared);
-    const double baseHigh = shadowMask * gHigh * gHigh / distSqrLow;
-    const double fromChain = nl * spotAtt * baseMagnitude * distSqrRelError;
-    const double fromNdotL = spotHigh * baseHigh * directionError;
-    const double fromSpot = nlHigh * baseHigh * 2.0 * sHigh * std::abs(light.spot.a) * directionError;
-    const double fromRange = nlHigh * spotHigh * shadowMask / distSqr * 4.0 * gHigh * q * q * distSqrRelError;
-    // The mask's filtering error acts on the unmasked term.
-    const double fromMask = nl * spotAtt * rangeAtt / distSqr * shadowMaskError;
-    Vec3 termBound = light.finalColor * (fromChain + fromNdotL + fromSpot + fromRange + fromMask) +
-                     term * maskRounding;
-    if (light.cookieLight) {
-      const double positionError = rayError + tol::kCookieCoordinateSteps * u * distance;
-      applyCookie(cookieWithBound(*light.cookieLight, p, positionError, filterWeightPrecision_), term, termBound);
+    const Vec3Of<FloatBound> color = uploaded(light.finalColor);
+    Vec3Of<FloatBound> radiance;
+    if (light.directional) {
+      radiance = terms::directionalRadiance(color, uploaded(light.towardLight), shadowMask * textures, nBound);
+    } else {
+      // p over the snapped square, but no nearer the light than half its
+      // distance: a square that reaches the light is one whose value changes
+      // without bound, which the sub-pixel term's first-order change of the
+      // value does not hold either; the range stops where the light's
+      // distance has halved.
+      const Vec3Of<FloatBound> pBound =
+          boundedInput(relative, positionError, std::min(where.snapMove, 0.5 * distance));
+      radiance = terms::localRadiance(color, uploaded(lightRelative), FloatBound::uploaded(light.invRangeSq),
+                                      uploaded(light.spotDirection), FloatBound::uploaded(light.spot.a),
+                                      FloatBound::uploaded(light.spot.b), shadowMask, textures, pBound, nBound);
     }
-    if (receiver && (light.shadowMap || light.idealShadowLight))
-      applyShadow(shadowAt(light, p, N, rayError, *receiver), term, termBound, sum);
+    const Vec3 term = valueOf(radiance);
+    const Vec3 termBound = errorOf(radiance);
+    if (shadow && where.snapMove > 0 && light.shadowMap) {
+      // A compare's edge inside the snapping square may put the point a
+      // centre sees in shadow (or out of it) where none of the sampled
+      // points of the square lies. A hard shadow's edge is a texel's: its
+      // lookups over the whole square give the factor's range there. A
+      // filtered shadow is continuous in the map's coordinates, which the
+      // sampled points follow, but each tap compares, and flips where the
+      // receiver's depth crosses its texel's (at grazing light, acne a few
+      // pixels wide): its lookups with the receiver's depth over the square
+      // give the range. The term's range with it (p already ranges over the
+      // square) bounds the change.
+      const bool hard = light.shadowMap->projection().spec.filter == lighting::ShadowFilter::Hard;
+      const LookupError overSquareError =
+          hard ? LookupError{lookupError + where.snapMove} : LookupError{lookupError, where.snapMove};
+      const ShadowFactor square = shadowAt(light, p, N, overSquareError, *receiver);
+      if (square.hi - square.lo > shadow->hi - shadow->lo) {
+        const FloatBound squareTextures = textureFactor(cookie ? &*cookie : nullptr, &square);
+        const Vec3Of<FloatBound> overSquare =
+            light.directional
+                ? terms::directionalRadiance(color, uploaded(light.towardLight), shadowMask * squareTextures, nBound)
+                : terms::localRadiance(color, uploaded(lightRelative), FloatBound::uploaded(light.invRangeSq),
+                                       uploaded(light.spotDirection), FloatBound::uploaded(light.spot.a),
+                                       FloatBound::uploaded(light.spot.b), shadowMask, squareTextures,
+                                       boundedInput(relative, positionError, std::min(where.snapMove, 0.5 * distance)),
+                                       nBound);
+        const auto change = [](const FloatBound& c) { return std::max(c.hi - c.value, c.value - c.lo); };
+        sum.shadowEdgeChange += Vec3(change(overSquare.x), change(overSquare.y), change(overSquare.z));
+      }
+    }
+    if (shadow) {
+      // Whether the light adds anything unshadowed: the exact term without s.
+      const double c = cookie ? cookie->value : 1.0;
+      const Vec3Of<double> unshadowed =
+          light.directional
+              ? terms::directionalRadiance(exact(light.finalColor), exact(light.towardLight), shadowMask.value * c,
+                                           exact(N))
+              : terms::localRadiance(exact(light.finalColor), exact(lightRelative), light.invRangeSq,
+                                     exact(light.spotDirection), light.spot.a, light.spot.b, shadowMask.value, c,
+                                     exact(relative), exact(N));
+      noteShadow(*shadow, unshadowed.x > 0 || unshadowed.y > 0 || unshadowed.z > 0, sum);
+    }
     sum.value += term;
     sum.contributing += glm::vec<3, double>(glm::greaterThan(term, Vec3(0.0)));
     absoluteSum += term;
     sum.errorBound += termBound;
-    // L = ray * inversesqrt(distSqr): the ray's turn plus the normalisation.
-    const VectorError lightError{tol::kNormalizedLengthSteps * u,
-                                 std::min(2.0, rayError / distance + tol::kNormalizedDirectionSteps * u)};
-    if (lobe) addSpecular(*lobe, N, L, lightError, term, termBound, sum);
+    if (!lobe) continue;
+    // The lobe's own bound (reference/specular_bound.h) takes L's error
+    // split along and across L.
+    if (light.directional) {
+      const VectorError uploadedL{tol::kNormalizedDirectionSteps * step, tol::kNormalizedDirectionSteps * step};
+      addSpecular(*lobe, N, light.towardLight, uploadedL, term, termBound, sum);
+    } else {
+      const Vec3 L = towardLight * (1.0 / distance);
+      const VectorError lightError{tol::kNormalizedLengthSteps * step,
+                                   std::min(2.0, lookupError / distance + tol::kNormalizedDirectionSteps * step)};
+      addSpecular(*lobe, N, L, lightError, term, termBound, sum);
+    }
   }
-  // The running sum rounds once per added term.
-  sum.errorBound += absoluteSum * (double(lights.size()) * u);
-  sum.specularBound += sum.specular * (double(lights.size()) * u);
+  // The running sum rounds once per added term, either neighbour (1 ULP).
+  sum.errorBound += absoluteSum * (double(lights.size()) * Float32Precision::kAddUlps * kUlpRelative);
+  sum.specularBound += sum.specular * (double(lights.size()) * step);
 }
 
 }  // namespace reference

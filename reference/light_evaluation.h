@@ -8,6 +8,7 @@
 #include "lighting/scene.h"
 #include "reference/shadow_maps.h"
 #include "reference/specular_bound.h"
+#include "reference/surface_inputs.h"
 #include "reference/tolerance_model.h"
 
 #include <vector>
@@ -33,6 +34,10 @@ struct LightSum {
   bool shadowed = false;
   double widestShadowSpan = 0;
   double widestShadowLo = 1, widestShadowHi = 1;  // that light's [s_lo, s_hi]
+  // Per channel, without albedo: how far the shadowed lights' terms may
+  // change over the snapping square where a shadow edge crosses it
+  // (docs/tolerances.md section 2), beyond what its sampled points show.
+  Vec3 shadowEdgeChange{0.0};
 };
 
 // SPEC 3.9's real-time shadows of a frame, for the evaluator: per scene
@@ -56,12 +61,19 @@ struct PositionContext {
   Vec3 camera{0.0};
   double objectExtent = 0;  // |object centre - camera| + object radius
   // Deferred path: the light pass reconstructs the position from depth, off
-  // by up to this much more (world units; deferred_buffers.h).
+  // by up to this much (world units; deferred_buffers.h), instead of
+  // interpolating it.
   double reconstructionError = 0;
   // How far vertex snapping may move the surface point the pixel centre sees
   // (world units, along the surface; tolerance_model.h): the factors that
   // multiply an arithmetic error are taken at their highest over it too.
   double snapMove = 0;
+  // The fragment's position and normal inputs' errors (reference/surface_inputs.h);
+  // null: a vertex of the camera-relative magnitude |p - camera| + objectExtent.
+  const SurfaceErrors* inputs = nullptr;
+  // The value alone, no bound: a point the sub-pixel term shades only for
+  // its value (reference_renderer.cpp).
+  bool valueOnly = false;
 };
 
 // The shadow mask at a point (SPEC 3.5): the object's mask sampled at the
@@ -126,7 +138,7 @@ class LightEvaluator {
     const lighting::Light* idealShadowLight = nullptr;
     double realtimeShadowStrength = 0;
   };
-  ShadowFactor shadowAt(const Prepared& light, const Vec3& p, const Vec3& N, double positionError,
+  ShadowFactor shadowAt(const Prepared& light, const Vec3& p, const Vec3& N, const LookupError& error,
                         const ShadowReceiver& receiver) const;
   std::vector<Prepared> lights_;
   double filterWeightPrecision_;

@@ -35,7 +35,7 @@ TexelFootprint texelFootprint(int resolution, const Vec2& uv) {
 }
 
 double filteringErrorBound(double spread, double magnitude, int resolution, double weightPrecision) {
-  const double u = tol::kUnitRoundoff;
+  const double u = tol::kStepRoundoff;
   // Inside one cell the bilinear value changes by at most `spread` per texel
   // along each axis, i.e. N x spread per unit of UV.
   const double fromWeights = tol::kFilterWeightErrorsPerSample * weightPrecision * spread;

@@ -6,11 +6,13 @@
 #include "reference/light_evaluation.h"
 #include "reference/lightmap_sampling.h"
 #include "reference/parallel_rows.h"
+#include "reference/surface_inputs.h"
 #include "reference/tolerance_model.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numbers>
@@ -38,6 +40,11 @@ struct Shaded {
   // samples the map at a snapped point, so the pixel takes the largest of
   // this over the centre and its sub-pixel shifts.
   Vec3 interpolation{0.0};
+  // What the lights add to `value`: all of it but A * (ambient + lightmap).
+  Vec3 lights{0.0};
+  // The shadowed lights' change over the snapping square where a shadow
+  // edge crosses it (LightSum::shadowEdgeChange), with the material's colours.
+  Vec3 shadowEdgeChange{0.0};
   int evaluations = 0;
   bool shadowed = false;        // LightSum::shadowed (SPEC 3.9)
   double widestShadowSpan = 0;  // LightSum::widestShadowSpan, and its interval
@@ -53,7 +60,7 @@ struct BrdfColourErrors {
 BrdfColourErrors brdfColourErrors(const Object& object) {
   BrdfColourErrors e;
   if (object.brdf != Brdf::Srp) return e;
-  const double u = tol::kUnitRoundoff, m = object.metallic;
+  const double u = tol::kStepRoundoff, m = object.metallic;
   const Vec3& A = object.albedo;
   e.diffuse = A * ((1.0 - kMinReflectivity) * (tol::kDiffuseColourSteps * u * (1.0 - m) + u * m));
   e.specular = glm::max(A, Vec3(kMinReflectivity)) * (tol::kSpecularColourSteps * u) +
@@ -96,6 +103,8 @@ struct FrameShading {
   std::optional<RealtimeBakedLights> realtimeBaked;  // ReferenceOptions::bakedLightsRealtime
   std::vector<Vec3> vertexValue;          // per world vertex: legacy vertex lights (SPEC 4)
   std::vector<Vec3> vertexBound;
+  glm::dmat4 viewProjection;     // camera-relative world to clip, as the GPU gets it
+  double nearestClipW;           // the near plane's clip w (1 orthographic)
   double filterWeightPrecision;  // ReferenceOptions::filterWeightPrecision
   double vertexSnap;             // tolerance::vertexSnapPx of ReferenceOptions::subPixelPrecisionBits
 
@@ -110,6 +119,8 @@ struct FrameShading {
         evaluator(f.scene(), f.scene().pipeline.profile,
                   options.ideal ? std::vector<double>{} : f.selection.weightsBySceneLight(f.scene().lights.size()),
                   f.prepared->shadowMask.channelOfLight, options.filterWeightPrecision, &realtimeShadows),
+        viewProjection(f.view.cameraRelativeViewProjection()),
+        nearestClipW(f.view.camera.projection == Projection::Perspective ? f.view.camera.nearPlane : 1.0),
         filterWeightPrecision(options.filterWeightPrecision),
         vertexSnap(tol::vertexSnapPx(options.subPixelPrecisionBits)) {
     const auto& objects = f.prepared->objects;
@@ -132,7 +143,12 @@ struct FrameShading {
       const std::vector<int>& perVertex = lights[vertex.object].perVertex;
       if (perVertex.empty()) continue;
       LightSum sum;
-      evaluator.accumulate(perVertex, vertex.position, vertex.normal, contexts[vertex.object], sum);
+      // The vertex stage's own position and normal (reference/surface_inputs.h).
+      const SurfaceErrors inputs = vertexInputErrors(f.prepared->objects[vertex.object].transform,
+                                                     f.view.camera.position, {vertex.local, vertex.localNormal});
+      PositionContext where = contexts[vertex.object];
+      where.inputs = &inputs;
+      evaluator.accumulate(perVertex, vertex.position, vertex.normal, where, sum);
       vertexValue[v] = sum.value;
       vertexBound[v] = sum.errorBound;
     }
@@ -153,7 +169,7 @@ struct FrameShading {
   // (docs/tolerances.md "Specular lobe"); orthographic V is the uploaded
   // float(-forward), one rounding per component.
   LobeAtPoint lobeAt(const Vec3& p, const PositionContext& where, double smoothness) const {
-    const double u = tol::kUnitRoundoff;
+    const double u = tol::kStepRoundoff;
     LobeAtPoint lobe;
     lobe.view = viewDirection(frame.view, p);
     lobe.smoothness = smoothness;
@@ -164,8 +180,8 @@ struct FrameShading {
       lobe.viewError = {tol::kNormalizedDirectionSteps * u, tol::kNormalizedDirectionSteps * u};
     } else {
       const double distance = glm::length(p - where.camera);
-      const double positionError =
-          tol::kPositionRoundingSteps * u * (distance + where.objectExtent) + where.reconstructionError;
+      const double positionError = where.reconstructionError > 0 ? where.reconstructionError
+                                                                 : std::sqrt(3.0) * where.inputs->position;
       lobe.viewError = {tol::kNormalizedLengthSteps * u,
                         std::min(2.0, positionError / distance + tol::kNormalizedDirectionSteps * u)};
     }
@@ -191,7 +207,57 @@ struct FrameShading {
     return {t.object, t.piece};
   }
 
-  Shaded shade(const RayHit& hit) const {
+  // Whether `other` (the hit of `ray`) lies on the surface the centre's
+  // `hit` does: the same smooth piece, and no jump in depth from it. A piece
+  // may fold over itself (a fillet in front of a face of the same piece):
+  // where `ray` meets the centre triangle's plane and where it hits may then
+  // be far apart. A jump is a gap of more than two pixel footprints along the
+  // ray (more at grazing angles), far above what curvature gives a probe a
+  // fraction of a pixel away.
+  bool sameSurface(const std::optional<RayHit>& hit, const std::optional<RayHit>& other, const Ray& ray) const {
+    if (!(keyOf(hit) == keyOf(other))) return false;
+    if (!hit || hit->triangle == other->triangle) return true;
+    const WorldTriangle& t = world.triangles[hit->triangle];
+    const Vec3 normal = glm::normalize(glm::cross(t.p1 - t.p0, t.p2 - t.p0));
+    const double facing = std::abs(glm::dot(normal, ray.direction));
+    if (facing < 1e-9) return false;
+    const double tPlane = glm::dot(normal, t.p0 - ray.origin) / glm::dot(normal, ray.direction);
+    const Vec3 p = ray.origin + other->t * ray.direction;
+    return std::abs(other->t - tPlane) <= 2.0 * frame.view.pixelSizeAt(p) / std::max(facing, 0.05);
+  }
+
+  // Whether the pixel point (px, py) lies within `distancePx` of an open
+  // edge of the hit triangle (WorldTriangle::openEdges), on screen; the part
+  // of an edge nearer than the near plane is cut off, as the clipper does.
+  bool nearOpenEdge(const RayHit& hit, double px, double py, double distancePx) const {
+    const WorldTriangle& t = world.triangles[hit.triangle];
+    if (t.openEdges == 0) return false;
+    const glm::dmat4 clipOf = frame.view.cameraRelativeViewProjection();
+    const double nearW = frame.view.camera.projection == Projection::Perspective ? frame.view.camera.nearPlane : 1.0;
+    const Vec3 corners[3] = {t.p0, t.p1, t.p2};
+    glm::dvec4 clip[3];
+    for (int i = 0; i < 3; ++i) clip[i] = clipOf * glm::dvec4(corners[i] - frame.view.camera.position, 1.0);
+    auto screenOf = [&](const glm::dvec4& c) {
+      return glm::dvec2((c.x / c.w + 1.0) * 0.5 * frame.view.width, (1.0 - c.y / c.w) * 0.5 * frame.view.height);
+    };
+    const glm::dvec2 point(px, py);
+    for (int i = 0; i < 3; ++i) {
+      if (!(t.openEdges & (1u << i))) continue;
+      glm::dvec4 ca = clip[i], cb = clip[(i + 1) % 3];
+      if (ca.w < nearW && cb.w < nearW) continue;
+      if (ca.w < nearW) ca += (nearW - ca.w) / (cb.w - ca.w) * (cb - ca);
+      if (cb.w < nearW) cb += (nearW - cb.w) / (ca.w - cb.w) * (ca - cb);
+      const glm::dvec2 a = screenOf(ca), ab = screenOf(cb) - a;
+      const double length2 = glm::dot(ab, ab);
+      const double along = length2 > 0 ? std::clamp(glm::dot(point - a, ab) / length2, 0.0, 1.0) : 0.0;
+      if (glm::length(point - (a + along * ab)) <= distancePx) return true;
+    }
+    return false;
+  }
+
+  // `withBound` false: the value alone (a shifted point of the sub-pixel
+  // term, whose bound nothing reads).
+  Shaded shade(const RayHit& hit, bool withBound = true) const {
     const WorldTriangle& tri = world.triangles[hit.triangle];
     const double b0 = 1.0 - hit.b1 - hit.b2;
     const Vec3 p = b0 * tri.p0 + hit.b1 * tri.p1 + hit.b2 * tri.p2;
@@ -229,15 +295,26 @@ struct FrameShading {
     const bool deferred = scene.pipeline.path == RenderPath::Deferred;
     PositionContext where = contexts[tri.object];
     where.snapMove = snappedSurfaceMove(frame.view, p, glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0), vertexSnap);
+    // What the fragment stage gets at this point: the vertex stage's outputs
+    // blended as the rasteriser does (reference/surface_inputs.h).
+    SurfaceErrors inputs;
+    if (withBound) {
+      std::array<MeshVertex, 3> meshVertices;
+      for (int k = 0; k < 3; ++k)
+        meshVertices[k] = {world.vertices[tri.vertex[k]].local, world.vertices[tri.vertex[k]].localNormal};
+      inputs = fragmentInputErrors(frame.prepared->objects[tri.object].transform, frame.view.camera.position,
+                                   viewProjection, nearestClipW, meshVertices, {b0, hit.b1, hit.b2});
+    }
+    where.inputs = &inputs;
+    where.valueOnly = !withBound;
     if (deferred) where.reconstructionError = reconstructionPositionError(frame.view, p, vertexSnap);
     const MaterialBrdf& brdf = materials[tri.object];
     std::optional<LobeAtPoint> lobe;
     if (brdf.lobe) lobe = lobeAt(p, where, scene.objects[tri.object].smoothness);
-    // SPEC 3.9's fade reads the view depth, off by the position error.
+    // SPEC 3.9's fade reads the view depth, off by the position error (the
+    // deferred pass's is its reconstruction's).
     const ShadowReceiver receiver{frame.view.viewDepth(p),
-                                  tol::kPositionRoundingSteps * tol::kUnitRoundoff *
-                                          (glm::length(p - where.camera) + where.objectExtent) +
-                                      where.reconstructionError};
+                                  deferred ? where.reconstructionError : std::sqrt(3.0) * inputs.position};
     LightSum sum;
     evaluator.accumulate(lights[tri.object].perPixel, p, N, where, sum,
                          bake && !bake->shadowMask.empty() ? &mask : nullptr, lobe ? &*lobe : nullptr, &receiver);
@@ -257,8 +334,10 @@ struct FrameShading {
     const BrdfColourErrors& colourError = colourErrors[tri.object];
     shaded.bound = brdf.diffuse * (sum.errorBound + bakedBound) + brdf.specular * sum.specularBound +
                    colourError.diffuse * (unlit + sum.value) + colourError.specular * sum.specular +
-                   glm::abs(shaded.value) * (combineSteps * tol::kUnitRoundoff);
+                   glm::abs(shaded.value) * (combineSteps * tol::kStepRoundoff);
     if (deferred) applyDeferredBuffer(scene.pipeline.deferredBuffer, brdf, sum, shaded);
+    shaded.lights = shaded.value - brdf.diffuse * unlit;
+    shaded.shadowEdgeChange = brdf.diffuse * sum.shadowEdgeChange;
     shaded.interpolation = brdf.diffuse * interpolation;
     shaded.evaluations = sum.evaluations;
     shaded.shadowed = sum.shadowed;
@@ -275,7 +354,7 @@ struct FrameShading {
                                   Shaded& shaded) {
     const Vec3 light = brdf.diffuse * sum.value + brdf.specular * sum.specular;
     // Albedo times each light's term before the blend: one rounding per term.
-    shaded.bound += glm::abs(light) * (tol::kDeferredAlbedoProductSteps * tol::kUnitRoundoff);
+    shaded.bound += glm::abs(light) * (tol::kDeferredAlbedoProductSteps * tol::kStepRoundoff);
     for (int c = 0; c < 3; ++c) {
       // A light adds nothing in a channel whose diffuse colour and F0 are 0:
       // exp2(-0) = 1, + 0.
@@ -295,11 +374,11 @@ struct FrameShading {
   // Depth-buffer resolution in view depth at depth z (SPEC 7: D32F, LESS).
   double depthResolution(double z, const Vec3& p) const {
     const Camera& c = frame.view.camera;
-    const double storedUlp = tol::kDepthTieUlps * tol::kUnitRoundoff;
+    const double storedUlp = tol::kDepthTieUlps * tol::kStepRoundoff;
     const double fromBuffer = c.projection == Projection::Perspective
                                   ? storedUlp * z * z * (c.farPlane - c.nearPlane) / (c.farPlane * c.nearPlane)
                                   : storedUlp * (c.farPlane - c.nearPlane);
-    const double fromPosition = tol::kPositionRoundingSteps * tol::kUnitRoundoff * glm::length(p - c.position);
+    const double fromPosition = tol::kPositionRoundingSteps * tol::kStepRoundoff * glm::length(p - c.position);
     return fromBuffer + fromPosition;
   }
 
@@ -375,6 +454,9 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
                              options.ideal ? std::vector<std::unique_ptr<ReferenceShadowMap>>{}
                                            : shadowMaps(frame, options.threads, options.subPixelPrecisionBits));
   const double snap = tol::vertexSnapPx(options.subPixelPrecisionBits);
+  const Pipeline& pipeline = frame.scene().pipeline;
+  const bool ldr8 = pipeline.path == RenderPath::Deferred && pipeline.deferredBuffer == DeferredBuffer::Ldr8;
+  const Vec3 backgroundBound(ldr8 && !options.valueOnly ? tol::kLdr8DecodeAbsError : 0.0);
   const double edgeDistance = tol::edgeDistancePx(options.subPixelPrecisionBits);
 
   // Pass 1: what each pixel centre sees; pass 2 needs the neighbours' answers
@@ -398,6 +480,7 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
     out.toleranceShift = imaging::Image(width, height, 3);
   }
   if (options.keepShadowIntervals) out.shadowInterval = imaging::Image(width, height, 3);
+  if (options.keepLightPart) out.lightPart = imaging::Image(width, height, 3);
   std::atomic<std::int64_t> evaluations{0}, masked{0}, shadowed{0}, ambiguous{0};
 
   forEachRow(height, options.threads, [&](int j) {
@@ -415,7 +498,10 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
       for (int dj = -1; dj <= 1; ++dj)
         for (int di = -1; di <= 1; ++di) {
           const int ni = i + di, nj = j + dj;
-          if (ni >= 0 && nj >= 0 && ni < width && nj < height && !(keys[std::size_t(nj) * width + ni] == key))
+          if (ni < 0 || nj < 0 || ni >= width || nj >= height) continue;
+          const std::size_t n = std::size_t(nj) * width + ni;
+          if (!(keys[n] == key) ||
+              (hits[k] && !shading.sameSurface(hits[k], hits[n], frame.view.rayThroughPixel(ni + 0.5, nj + 0.5))))
             neighbourDiffers = true;
         }
       if (neighbourDiffers) {
@@ -423,19 +509,25 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
           const double angle = 2.0 * std::numbers::pi * p / kEdgeProbes;
           const Ray probe = frame.view.rayThroughPixel(cx + edgeDistance * std::cos(angle),
                                                        cy + edgeDistance * std::sin(angle));
-          if (!(shading.keyOf(shading.trace(probe)) == key)) compared = false;
+          if (!shading.sameSurface(hits[k], shading.trace(probe), probe)) compared = false;
         }
       }
 
-      Vec3 value(0.0), bound(0.0), shiftChange(0.0), interpolation(0.0);
+      // The background's value is 0 on every path but ldr8's, whose composite
+      // decodes the light buffer's clear value: -log2(1), 0 within log2's
+      // absolute error (deferred_buffers.h).
+      Vec3 value(0.0), bound(backgroundBound), shiftChange(0.0), interpolation(0.0);
       bool shadowedPixel = false;
       double shadowSpan = 0, shadowLo = 1, shadowHi = 1;
       if (hits[k]) {
         const Ray ray = frame.view.rayThroughPixel(cx, cy);
-        if (shading.depthIsAmbiguous(ray, *hits[k])) compared = false;
+        if (shading.depthIsAmbiguous(ray, *hits[k]) || shading.nearOpenEdge(*hits[k], cx, cy, edgeDistance))
+          compared = false;
         const Shaded centre = shading.shade(*hits[k]);
         rowEvaluations += centre.evaluations;
         value = centre.value;
+        if (options.keepLightPart)
+          for (int c = 0; c < 3; ++c) out.lightPart.at(i, j, c) = float(centre.lights[c]);
         bound = centre.bound;
         interpolation = centre.interpolation;
         shadowedPixel = centre.shadowed;
@@ -443,22 +535,29 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         shadowLo = centre.widestShadowLo;
         shadowHi = centre.widestShadowHi;
         // Sub-pixel snapping (tolerance_model.h): the larger change of the
-        // two shifts along x plus the larger of the two along y.
-        const double shifts[4][2] = {{snap, 0}, {-snap, 0}, {0, snap}, {0, -snap}};
-        Vec3 axisChange[2] = {Vec3(0.0), Vec3(0.0)};
-        for (int a = 0; a < 4; ++a) {
-          const auto shiftedHit = shading.trace(frame.view.rayThroughPixel(cx + shifts[a][0], cy + shifts[a][1]));
-          if (!(shading.keyOf(shiftedHit) == key)) {
+        // two shifts along x plus the larger of the two along y, or the
+        // largest change at a corner of the square where that is more (a
+        // range, cone or shadow edge crossing the square near a corner:
+        // the value is not linear there).
+        const double shifts[8][2] = {{snap, 0},    {-snap, 0},    {0, snap},     {0, -snap},
+                                     {snap, snap}, {-snap, snap}, {snap, -snap}, {-snap, -snap}};
+        Vec3 axisChange[2] = {Vec3(0.0), Vec3(0.0)}, cornerChange(0.0);
+        for (int a = 0; a < 8; ++a) {
+          const Ray shiftedRay = frame.view.rayThroughPixel(cx + shifts[a][0], cy + shifts[a][1]);
+          const auto shiftedHit = shading.trace(shiftedRay);
+          if (!shading.sameSurface(hits[k], shiftedHit, shiftedRay)) {
             compared = false;
             continue;
           }
           if (options.valueOnly) continue;
-          const Shaded shifted = shading.shade(*shiftedHit);
+          const Shaded shifted = shading.shade(*shiftedHit, false);
           rowEvaluations += shifted.evaluations;
-          axisChange[a / 2] = glm::max(axisChange[a / 2], glm::abs(shifted.value - value));
+          const Vec3 change = glm::abs(shifted.value - value);
+          if (a < 4) axisChange[a / 2] = glm::max(axisChange[a / 2], change);
+          else cornerChange = glm::max(cornerChange, change);
           interpolation = glm::max(interpolation, shifted.interpolation);
         }
-        shiftChange = axisChange[0] + axisChange[1];
+        shiftChange = glm::max(axisChange[0] + axisChange[1], cornerChange) + centre.shadowEdgeChange;
       }
       const Vec3 tolerance = options.valueOnly ? Vec3(0.0) : tol::pixelTolerance(value, bound, shiftChange, interpolation);
       if (options.keepExactValues) out.exactValue[k] = value;

@@ -46,10 +46,12 @@ struct ReferenceOptions {
   bool keepShadowIntervals = false;
   // The value and its mask only, no tolerance (left 0): the benchmarks'
   // error baseline (suite/bench/run_state.h). The sub-pixel shifts are still
-  // traced, since they decide the mask, but not shaded: four of a pixel's
-  // five shadings, so an ideal 1280x720 frame costs about a fifth. Value and
+  // traced, since they decide the mask, but not shaded: eight of a pixel's
+  // nine shadings, so an ideal 1280x720 frame costs a fraction of a full one. Value and
   // mask are bit for bit those of a full render.
   bool valueOnly = false;
+  // Also return ReferenceImages::lightPart (the suite's sharpness).
+  bool keepLightPart = false;
 };
 
 struct ReferenceImages {
@@ -65,6 +67,9 @@ struct ReferenceImages {
   // filtering, buffer and storage bounds; they sum to `tolerance`.
   imaging::Image toleranceArithmetic;
   imaging::Image toleranceShift;
+  // keepLightPart only (RGB, else empty): what the lights add to each
+  // pixel's value, all of it but A * (ambient + lightmap); 0 on the background.
+  imaging::Image lightPart;
   // SPEC 3.9's cap on ambiguity: the compared pixels that some light with a
   // real-time shadow lights, and those among them whose interval [s_lo,
   // s_hi] is wider than tolerance::kAmbiguousShadowWidth for some light.

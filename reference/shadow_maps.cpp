@@ -19,7 +19,7 @@ namespace tol = tolerance;
 
 namespace {
 
-constexpr double u = tol::kUnitRoundoff;
+constexpr double u = tol::kStepRoundoff;
 
 HitFilter everyFace() {
   HitFilter filter;
@@ -383,6 +383,14 @@ ShadowLookup ReferenceShadowMap::lookup(const Vec3& p, const Vec3& N, const Look
       points[1 + 2 * axis + sign] = q;
       points[1 + 2 * axis + sign][axis] += sign ? e : -e;
     }
+  // The receiver's further move that only the compares see: its depth
+  // range grows by the points of the larger cube.
+  std::array<Vec3, 6> depthPoints;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign = 0; sign < 2; ++sign) {
+      depthPoints[2 * axis + sign] = q;
+      depthPoints[2 * axis + sign][axis] += sign ? e + error.depthOnlyMove : -(e + error.depthOnlyMove);
+    }
   const bool cube = projection_.type == LightType::Point;
   std::array<bool, kCubeFaceCount> views{};
   for (const Vec3& point : points) views[projection_.viewOf(point)] = true;
@@ -403,6 +411,11 @@ ShadowLookup ReferenceShadowMap::lookup(const Vec3& p, const Vec3& N, const Look
       mv.include(m.mv);
       depth.include(m.depth);
     }
+    if (error.depthOnlyMove > 0)
+      for (const Vec3& point : depthPoints) {
+        const MapPoint m = view.project(point);
+        if (!m.behind) depth.include(m.depth);
+      }
     if (anyOutside) {
       out.lo = std::min(out.lo, 1.0);
       out.hi = std::max(out.hi, 1.0);

@@ -39,8 +39,12 @@ struct ShadowLookup {
 
 // How far the GPU's receiver point may be from the double p' (world units):
 // the caller's position error of p and of the light's position.
+// `depthOnlyMove`: a further move of the receiver (the snapping square's on
+// the surface) that only the compares' depth sees; a filter's weights follow
+// such a move continuously, which the caller's sampled points hold.
 struct LookupError {
   double position = 0;
+  double depthOnlyMove = 0;
 };
 
 class ReferenceShadowMap {

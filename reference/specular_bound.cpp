@@ -24,13 +24,13 @@ struct Interval {
 double dotError(double c, const VectorError& a, const VectorError& b) {
   const double sine = std::sqrt(std::max(0.0, 1.0 - c * c));
   return std::abs(c) * (a.length + b.length) + sine * (a.direction + b.direction) + a.direction * b.direction +
-         tol::kUnitDotRoundingSteps * tol::kUnitRoundoff;
+         tol::kUnitDotRoundingSteps * tol::kStepRoundoff;
 }
 
 // [x - e, x + e] through saturate and square, both monotone on [0, 1], then
 // the square's own rounding.
 Interval saturatedSquare(double x, double e, bool anything) {
-  const double u = tol::kUnitRoundoff;
+  const double u = tol::kStepRoundoff;
   const double lo = anything ? 0.0 : saturate(x - e);
   const double hi = anything ? 1.0 : saturate(x + e);
   return {lo * lo * (1 - u), hi * hi * (1 + u)};
@@ -40,7 +40,7 @@ Interval saturatedSquare(double x, double e, bool anything) {
 
 SpecularBound specularWithBound(const Vec3& N, const Vec3& V, const Vec3& L, double smoothness,
                                 const LobeInputErrors& e) {
-  const double u = tol::kUnitRoundoff;
+  const double u = tol::kStepRoundoff;
   const double roughness = square(1.0 - smoothness);
   SpecularBound out;
   out.value = specularStrength(N, V, L, roughness);

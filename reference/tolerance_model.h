@@ -28,17 +28,17 @@
 
 namespace reference::tolerance {
 
-// float32 unit roundoff: a correctly rounded operation is off by at most u relative.
+// float32 unit roundoff: a value rounded to nearest is off by at most u
+// relative, as the CPU rounds what it uploads.
 constexpr double kUnitRoundoff = 0x1p-24;
 
-// Rounding steps on the longest chain of one light term (ray, dot, max,
-// inversesqrt at 2 ULP, products, saturate, square, divide at 2.5 ULP), each
-// counted at its GLSL/Vulkan precision and rounded up.
-constexpr double kRoundingStepsPerLightTerm = 16;
-
-// Absolute error of a dot product of two unit vectors that were each
-// normalised in float32 (normalize: inversesqrt 2 ULP + 3 products; dot: 5 ops).
-constexpr double kUnitDotAbsError = 8 * kUnitRoundoff;
+// One GPU operation's rounding, the unit of the step counts below: x + y,
+// x * y and conversions are "correctly rounded" in an implementation-defined
+// rounding mode (no shader here declares RoundingModeRTE), so either
+// neighbour of the exact result, under 1 ULP: 2^-23 relative. (A count of
+// ULPs, such as the divide's 2.5, is 2 steps per ULP: at most twice that.)
+// The light terms are bounded without counts (reference/float_bound.h).
+constexpr double kStepRoundoff = 0x1p-23;
 
 // Position error of a camera-relative implementation, in units of u times the
 // magnitudes involved (|p - camera|, |object centre - camera| + radius for the
@@ -152,10 +152,12 @@ constexpr double kReconstructionMatrixSteps = 16;
 // adds it (forward multiplies the sum once): one more rounding per light.
 constexpr double kDeferredAlbedoProductSteps = 1;
 
-// hdr16 (RGBA16F): a half has 11 significant bits, unit roundoff 2^-11.
-// Each additive blend of a light that adds something rounds the incoming
-// value and the new running sum to half (docs/tolerances.md).
-constexpr double kHalfUnitRoundoff = 0x1p-11;
+// hdr16 (RGBA16F): a half has 11 significant bits. Each additive blend of a
+// light that adds something rounds the incoming value and the new running
+// sum to half (docs/tolerances.md), and "the rounding mode is not defined"
+// (Floating-Point Format Conversions): either neighbour, under 1 ULP of a
+// half, 2^-10 relative (the half-toward-zero admissible variant).
+constexpr double kHalfRounding = 0x1p-10;
 
 // A device may flush 16-bit denormals (below 2^-14) to zero on conversion:
 // absolute floor of each half rounding.
@@ -277,7 +279,7 @@ constexpr double kMostAmbiguousShadowFraction = 0.05;
 inline glm::dvec3 pixelTolerance(const glm::dvec3& value, const glm::dvec3& shadedBound,
                                  const glm::dvec3& shiftChange, const glm::dvec3& interpolation) {
   return glm::dvec3(kFlushToZeroFloor) +
-         (shadedBound + shiftChange + interpolation + glm::abs(value) * (kStorageRoundingSteps * kUnitRoundoff));
+         (shadedBound + shiftChange + interpolation + glm::abs(value) * (kStorageRoundingSteps * kStepRoundoff));
 }
 
 }  // namespace reference::tolerance

@@ -1,7 +1,10 @@
 #include "results/result_rules.h"
 
+#include <algorithm>
+
 namespace results {
 
+using comparison::AdmissibleStatus;
 using comparison::BackendStatus;
 using comparison::MutantStatus;
 using comparison::Verdict;
@@ -49,8 +52,52 @@ bool failedAttempt(Verdict raw) { return raw == Verdict::Fail || raw == Verdict:
 std::map<Verdict, int> countVerdicts(const std::vector<TestRecord>& tests, std::string_view backend) {
   std::map<Verdict, int> counts;
   for (const TestRecord& t : tests)
-    if (t.backend == backend) ++counts[t.verdict];
+    if (t.backend == backend && t.admissible.empty()) ++counts[t.verdict];
   return counts;
+}
+
+std::map<Verdict, int> countAdmissibleVerdicts(const std::vector<TestRecord>& tests, std::string_view backend) {
+  std::map<Verdict, int> counts;
+  for (const TestRecord& t : tests)
+    if (t.backend == backend && !t.admissible.empty()) ++counts[t.verdict];
+  return counts;
+}
+
+std::vector<AdmissibleRecord> admissibleRecords(const std::vector<TestRecord>& tests) {
+  std::vector<AdmissibleRecord> records;
+  struct Seen {
+    bool failed = false, broke = false, present = false;
+  };
+  std::vector<Seen> seen;
+  for (const TestRecord& t : tests) {
+    if (t.admissible.empty()) continue;
+    auto it = std::find_if(records.begin(), records.end(), [&](const AdmissibleRecord& r) {
+      return r.variant == t.admissible && r.backend == t.backend;
+    });
+    if (it == records.end()) {
+      AdmissibleRecord record;
+      record.variant = t.admissible;
+      record.backend = t.backend;
+      records.push_back(std::move(record));
+      seen.emplace_back();
+      it = records.end() - 1;
+    }
+    Seen& s = seen[std::size_t(it - records.begin())];
+    ++it->tests;
+    if (t.verdict == Verdict::ExpectedFail) it->expected.push_back(t.name);
+    if (comparison::isRunFailure(t.verdict)) {
+      it->failed.push_back(t.name);
+      s.failed = s.failed || t.verdict == Verdict::Fail || t.verdict == Verdict::UnexpectedPass;
+      s.broke = true;
+    }
+    s.present = s.present || t.verdict != Verdict::NotSupported;
+  }
+  for (std::size_t i = 0; i < records.size(); ++i)
+    records[i].status = seen[i].failed    ? AdmissibleStatus::Unsound
+                        : seen[i].broke   ? AdmissibleStatus::Incomplete
+                        : !seen[i].present ? AdmissibleStatus::NotSupported
+                                           : AdmissibleStatus::Sound;
+  return records;
 }
 
 MutantCounts countMutants(const std::vector<MutantRecord>& mutants, std::string_view backend) {

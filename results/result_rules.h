@@ -45,13 +45,24 @@ bool passed(comparison::Verdict raw);
 // expected-failures line says so), and the attempt a retried test's record shows.
 bool failedAttempt(comparison::Verdict raw);
 
-// The verdicts of `backend`'s tests, and its mutant records' statuses.
+// The verdicts of `backend`'s model tests, of its admissible variants'
+// tests, and its mutant records' statuses.
 std::map<comparison::Verdict, int> countVerdicts(const std::vector<TestRecord>& tests, std::string_view backend);
+std::map<comparison::Verdict, int> countAdmissibleVerdicts(const std::vector<TestRecord>& tests,
+                                                           std::string_view backend);
+
+// Each admissible variant on each backend over its tests, in the order the
+// tests first show them: Unsound when a test is a run failure by a Fail,
+// else Incomplete when one crashed or timed out, else NotSupported when
+// every test was, else Sound. `run` and `merge` both derive them from the
+// tests, so they cannot drift apart. `what` and `grant` are the table's
+// (shaders/shader_interface.def), which the runner fills in.
+std::vector<AdmissibleRecord> admissibleRecords(const std::vector<TestRecord>& tests);
 MutantCounts countMutants(const std::vector<MutantRecord>& mutants, std::string_view backend);
 
 // Whether `lightcts run` (or `merge`) exits 0: no test is a run failure (nor
-// a Flake with flakes_fail), no backend is in error, and no mutant failed
-// its check. In a shard a mutant that survived proves nothing yet: another
+// a Flake with flakes_fail; an admissible variant's test included), no
+// backend is in error, and no mutant failed its check. In a shard a mutant that survived proves nothing yet: another
 // shard may kill it, so only the merged run can say it survived.
 bool runPasses(const RunRecord& run);
 

@@ -116,6 +116,7 @@ AttemptRecord AttemptRecord::fromJson(const Json& json) {
 Json TestRecord::toJson() const {
   Json record = Json::object();
   for (const auto& [field, key] : kTestWords) record[key] = this->*field;
+  if (!admissible.empty()) record["admissible"] = admissible;
   record["verdict"] = comparison::verdictName(verdict);
   record["raw_verdict"] = comparison::verdictName(rawVerdict);
   record["expected_reason"] = expectedReason;
@@ -127,6 +128,7 @@ Json TestRecord::toJson() const {
 TestRecord TestRecord::fromJson(const Json& json) {
   TestRecord t;
   for (const auto& [field, key] : kTestWords) t.*field = text(json, key);
+  t.admissible = text(json, "admissible");
   t.verdict = verdictAt(json, "verdict");
   t.rawVerdict = verdictAt(json, "raw_verdict");
   t.expectedReason = text(json, "expected_reason");
@@ -153,26 +155,46 @@ TaskTimes taskTimesOf(const std::vector<TaskResult>& results) {
   return times;
 }
 
-Json BackendRecord::toJson() const {
-  Json countsJson = Json::object();
+namespace {
+
+// Verdict counts in report order; zeros only where listedWhenZero (`all`: every zero left out).
+Json countsJson(const std::map<Verdict, int>& counts, bool zeros) {
+  Json json = Json::object();
   for (const Verdict verdict : comparison::kAllVerdicts) {
     const auto it = counts.find(verdict);
     const int n = it == counts.end() ? 0 : it->second;
-    if (n > 0 || comparison::listedWhenZero(verdict)) countsJson[std::string(comparison::verdictName(verdict))] = n;
+    if (n > 0 || (zeros && comparison::listedWhenZero(verdict))) json[std::string(comparison::verdictName(verdict))] = n;
   }
-  return {{"backend", backend},
+  return json;
+}
+
+std::map<Verdict, int> countsAt(const Json& json, const char* key) {
+  std::map<Verdict, int> counts;
+  if (const auto it = json.find(key); it != json.end() && it->is_object())
+    for (const auto& [word, n] : it->items())
+      if (const auto verdict = comparison::parseVerdict(word); verdict && n.is_number_integer())
+        counts[*verdict] = n.get<int>();
+  return counts;
+}
+
+}  // namespace
+
+Json BackendRecord::toJson() const {
+  Json record = {{"backend", backend},
           {"api_backend", apiBackend},
           {"driver_option", driverOption},
           {"status", comparison::backendStatusName(status)},
           {"message", message},
           {"device", device},
           {"expected_failures_file", expectedFailuresFile},
-          {"counts", countsJson},
+          {"counts", countsJson(counts, true)},
           {"mutant_counts",
-           {{"killed", mutantCounts.killed}, {"survived", mutantCounts.survived}, {"other", mutantCounts.other}}},
-          {"wall_s", wallSeconds},
-          {"task_ms", {{"tasks", taskTimes.tasks}, {"reference", taskTimes.referenceMs}, {"total", taskTimes.totalMs}}},
-          {"log", log}};
+           {{"killed", mutantCounts.killed}, {"survived", mutantCounts.survived}, {"other", mutantCounts.other}}}};
+  if (!admissibleCounts.empty()) record["admissible_counts"] = countsJson(admissibleCounts, false);
+  record["wall_s"] = wallSeconds;
+  record["task_ms"] = {{"tasks", taskTimes.tasks}, {"reference", taskTimes.referenceMs}, {"total", taskTimes.totalMs}};
+  record["log"] = log;
+  return record;
 }
 
 BackendRecord BackendRecord::fromJson(const Json& json) {
@@ -184,10 +206,8 @@ BackendRecord BackendRecord::fromJson(const Json& json) {
   b.message = text(json, "message");
   b.device = carried(json, "device");
   b.expectedFailuresFile = text(json, "expected_failures_file");
-  if (const auto counts = json.find("counts"); counts != json.end() && counts->is_object())
-    for (const auto& [word, n] : counts->items())
-      if (const auto verdict = comparison::parseVerdict(word); verdict && n.is_number_integer())
-        b.counts[*verdict] = n.get<int>();
+  b.counts = countsAt(json, "counts");
+  b.admissibleCounts = countsAt(json, "admissible_counts");
   const Json mutantCounts = carried(json, "mutant_counts", Json::object());
   if (mutantCounts.is_object())
     b.mutantCounts = {int(number(mutantCounts, "killed")), int(number(mutantCounts, "survived")),
@@ -218,6 +238,23 @@ MutantRecord MutantRecord::fromJson(const Json& json) {
           texts(json, "killers"),
           texts(json, "killed_by"),
           carried(json, "evidence")};
+}
+
+Json AdmissibleRecord::toJson() const {
+  return {{"variant", variant},   {"what", what},     {"grant", grant},   {"backend", backend},
+          {"status", comparison::admissibleStatusName(status)}, {"tests", tests}, {"failed", failed},
+          {"expected", expected}};
+}
+
+AdmissibleRecord AdmissibleRecord::fromJson(const Json& json) {
+  return {text(json, "variant"),
+          text(json, "what"),
+          text(json, "grant"),
+          text(json, "backend"),
+          comparison::parseAdmissibleStatus(text(json, "status")).value_or(comparison::AdmissibleStatus::Incomplete),
+          int(number(json, "tests")),
+          texts(json, "failed"),
+          texts(json, "expected")};
 }
 
 Json slowestTests(const std::vector<TestRecord>& tests) {
@@ -258,6 +295,7 @@ Json RunRecord::toJson() const {
   run["backends"] = arrayOf(backends);
   run["tests"] = arrayOf(tests);
   run["mutants"] = arrayOf(mutants);
+  run["admissible"] = arrayOf(admissible);
   run["budgets"] = budgets;
   run["slowest"] = slowestTests(tests);
   return run;
@@ -295,6 +333,7 @@ RunRecord RunRecord::fromJson(const Json& json) {
   r.backends = recordsAt<BackendRecord>(json, "backends");
   r.tests = recordsAt<TestRecord>(json, "tests");
   r.mutants = recordsAt<MutantRecord>(json, "mutants");
+  r.admissible = recordsAt<AdmissibleRecord>(json, "admissible");
   r.budgets = carried(json, "budgets", Json::object());
   return r;
 }

@@ -67,6 +67,9 @@ struct TestRecord : TaskOutcome {
   std::string sceneFile;
   std::string description;
   std::string backend;  // the combination's suffix
+  // The admissible variant's --admissible spelling (SPEC 7); "" for the
+  // model's own test (and not written).
+  std::string admissible;
   comparison::Verdict verdict = comparison::Verdict::Crash;     // after expected failures and retries
   comparison::Verdict rawVerdict = comparison::Verdict::Crash;  // what the shown attempt said
   std::string expectedReason;  // the expected-failures line's reason, "" when not listed
@@ -103,8 +106,10 @@ struct BackendRecord {
   std::string message;
   Json device = nullptr;  // what the worker said of its device, or null
   std::string expectedFailuresFile;
-  std::map<comparison::Verdict, int> counts;  // written in report order, zeros only where listedWhenZero
+  std::map<comparison::Verdict, int> counts;  // the model's tests: in report order, zeros only where listedWhenZero
   MutantCounts mutantCounts;
+  // The admissible variants' tests (none unless the run asked for some).
+  std::map<comparison::Verdict, int> admissibleCounts;
   double wallSeconds = 0;
   TaskTimes taskTimes;
   std::string log;  // relative to the run folder
@@ -124,6 +129,22 @@ struct MutantRecord {
 
   Json toJson() const;
   static MutantRecord fromJson(const Json& json);
+};
+
+// An admissible variant on a backend, over its tests of the run: derived
+// from the tests (results::admissibleRecords), for the summary and the reports.
+struct AdmissibleRecord {
+  std::string variant;  // the --admissible spelling
+  std::string what;
+  std::string grant;    // the specification's sentence that allows it
+  std::string backend;
+  comparison::AdmissibleStatus status = comparison::AdmissibleStatus::Incomplete;
+  int tests = 0;
+  std::vector<std::string> failed;    // tests that are run failures (the unsound evidence)
+  std::vector<std::string> expected;  // tests that failed as their expected-failures line says
+
+  Json toJson() const;
+  static AdmissibleRecord fromJson(const Json& json);
 };
 
 // The whole of results.json. `shard` is null for a whole run (merged or
@@ -154,6 +175,7 @@ struct RunRecord {
   std::vector<BackendRecord> backends;
   std::vector<TestRecord> tests;
   std::vector<MutantRecord> mutants;
+  std::vector<AdmissibleRecord> admissible;
   Json budgets = Json::object();
 
   bool isShard() const { return shard.is_object(); }

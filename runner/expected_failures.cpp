@@ -1,5 +1,7 @@
 #include "runner/expected_failures.h"
 
+#include "shaders/shader_variant.h"
+
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -62,18 +64,25 @@ void ExpectedFailures::parse(const std::string& text, const std::string& sourceN
     if (const auto it = entries_.find(test); it != entries_.end())
       throw std::runtime_error(where + ": '" + test + "' is listed twice (first at " + it->second.source + ")");
     entries_.emplace(test, ExpectedFailure{*verdict, reason, where});
+    if (test.find('@') != std::string::npos) continue;
+    const std::size_t dot = test.rfind('.');
+    if (dot == std::string::npos) continue;
+    for (const shaders::AdmissibleName& variant : shaders::admissibleNames())
+      inherited_.emplace(test.substr(0, dot) + "@" + std::string(variant.name) + test.substr(dot),
+                         ExpectedFailure{*verdict, reason + " (listed for " + test + ")", where, true});
   }
 }
 
 const ExpectedFailure* ExpectedFailures::find(const std::string& test) const {
-  const auto it = entries_.find(test);
-  return it == entries_.end() ? nullptr : &it->second;
+  if (const auto it = entries_.find(test); it != entries_.end()) return &it->second;
+  const auto it = inherited_.find(test);
+  return it == inherited_.end() ? nullptr : &it->second;
 }
 
 comparison::Verdict applyExpectation(comparison::Verdict rawVerdict, const ExpectedFailure* expected) {
   using comparison::Verdict;
   if (!expected) return rawVerdict;
-  if (rawVerdict == Verdict::Pass) return Verdict::UnexpectedPass;
+  if (rawVerdict == Verdict::Pass) return expected->inherited ? Verdict::Pass : Verdict::UnexpectedPass;
   if (rawVerdict == expected->status) return Verdict::ExpectedFail;
   return rawVerdict;
 }

@@ -4,6 +4,13 @@
 // becomes ExpectedFail; a listed test that passes becomes UnexpectedPass, so
 // a fixed bug is noticed and the line removed.
 //
+// A driver's deviation does not go away under a legal implementation, so a
+// line for <group>.<name>.<suffix> also covers the admissible variants' tests
+// of that scene (<group>.<name>@<variant>.<suffix>), unless a line names the
+// variant's test itself. Such an inherited line makes a failure
+// ExpectedFail, but a pass stays Pass: a variant may well step around the
+// driver's fault.
+//
 //   # lavapipe, Mesa 22.3.6
 //   stability.range-1e4.vulkan,Fail  # lavapipe flushes denormals in the range term
 #pragma once
@@ -22,6 +29,7 @@ struct ExpectedFailure {
   comparison::Verdict status = comparison::Verdict::Fail;  // one that comparison::isExpectable
   std::string reason;
   std::string source;  // file:line, for messages
+  bool inherited = false;  // a variant's test, covered by its scene's line
 };
 
 class ExpectedFailures {
@@ -37,11 +45,13 @@ class ExpectedFailures {
 
  private:
   std::map<std::string, ExpectedFailure> entries_;
+  std::map<std::string, ExpectedFailure> inherited_;  // every variant's test of each listed test
   std::vector<std::string> files_;
 };
 
 // The verdict after the baseline: raw Pass of a listed test is
-// UnexpectedPass; the listed status is ExpectedFail; anything else stays.
+// UnexpectedPass (Pass where the line is inherited); the listed status is
+// ExpectedFail; anything else stays.
 comparison::Verdict applyExpectation(comparison::Verdict rawVerdict, const ExpectedFailure* expected);
 
 }  // namespace runner

@@ -115,18 +115,20 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         backendUp = true;
         if (callbacks.backendUp) callbacks.backendUp();
       } else if (kind == "backend_error" && next < plan.tasks.size() && !plan.tasks[next].isModelTest()) {
-        // A mutant's backend that could not be built (its shaders, its
-        // pipelines; the model's ran in the combination's first part): the
-        // combination is in error and that mutant's tasks crashed; a fresh
-        // worker takes the next mutant packed into this part, whose verdicts
-        // stay its own.
+        // A mutant's or an admissible variant's backend that could not be
+        // built (its shaders, its pipelines; the model's ran in the
+        // combination's first part): the combination is in error and that
+        // variant's tasks crashed; a fresh worker takes the next variant
+        // packed into this part, whose verdicts stay its own.
         outcome.status = BackendStatus::Error;
         outcome.message = event.value("message", "");
-        const shaders::Mutant failed = plan.tasks[next].mutant;
-        for (; next < plan.tasks.size() && plan.tasks[next].mutant == failed; ++next)
-          record(plan.tasks[next], abnormalResult(plan.tasks[next], Verdict::Crash,
-                                                  "mutant " + std::string(shaders::mutantName(failed)) +
-                                                      ": backend error: " + outcome.message));
+        const WorkerTask failed = plan.tasks[next];
+        const std::string which = failed.isMutantTask()
+                                      ? "mutant " + std::string(shaders::mutantName(failed.mutant))
+                                      : "admissible variant " + std::string(shaders::admissibleName(failed.admissible));
+        for (; next < plan.tasks.size() && plan.tasks[next].sameShaders(failed); ++next)
+          record(plan.tasks[next],
+                 abnormalResult(plan.tasks[next], Verdict::Crash, which + ": backend error: " + outcome.message));
         break;
       } else if (kind == "backend_unavailable" || kind == "backend_error") {
         // A backend that ran before and is gone now is an error, not a skip.

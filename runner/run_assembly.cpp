@@ -1,6 +1,6 @@
 #include "runner/run_assembly.h"
 
-#include "conformance/mutant_killers.h"
+#include "conformance/scene_lists.h"
 #include "results/result_rules.h"
 
 #include <map>
@@ -22,7 +22,7 @@ std::string joined(const std::vector<std::string>& items) {
 // retried test's record is that of its last failing attempt (for a Flake,
 // the failure and its evidence; a retry that found the backend gone,
 // NotSupported, does not turn a failure into a skip).
-results::TestRecord testRecord(const CatalogueEntry& scene, const std::string& suffix,
+results::TestRecord testRecord(const CatalogueEntry& scene, const WorkerTask& task, const std::string& suffix,
                                const std::vector<Attempt>& tries, const ExpectedFailure* listed) {
   const bool flake = tries.size() > 1 && results::passed(tries.back().result.rawVerdict);
   std::size_t shown = tries.size() - 1;
@@ -35,6 +35,7 @@ results::TestRecord testRecord(const CatalogueEntry& scene, const std::string& s
   record.sceneFile = scene.file.path.string();
   record.description = scene.description;
   record.backend = suffix;
+  if (task.admissible != shaders::Admissible::None) record.admissible = std::string(shaders::admissibleName(task.admissible));
   record.rawVerdict = result.rawVerdict;
   record.verdict = flake ? Verdict::Flake : applyExpectation(result.rawVerdict, listed);
   record.expectedReason = listed ? listed->reason : "";
@@ -90,14 +91,13 @@ AssembledRecords assembleRecords(const RunInputs& inputs, const RunUnits& plan, 
     for (std::size_t i = 0; i < run.tasks.size(); ++i) {
       const WorkerTask& task = run.tasks[i];
       const std::vector<Attempt>& tries = run.attempts[i];
-      if (!task.isModelTest()) {
+      if (task.isMutantTask()) {
         mutantTasks[task.mutant].push_back(&tries.front().result);
         continue;
       }
-      cleanVerdicts[task.test] = tries.back().result.rawVerdict;
-      const std::string caseName = task.test.substr(0, task.test.rfind('.'));
-      results::TestRecord record =
-          testRecord(*sceneOfCase.at(caseName), combination.suffix, tries, inputs.expected.find(task.test));
+      if (task.isModelTest()) cleanVerdicts[task.test] = tries.back().result.rawVerdict;
+      results::TestRecord record = testRecord(*sceneOfCase.at(caseOfTest(task.test)), task, combination.suffix, tries,
+                                              inputs.expected.find(task.test));
       if (record.verdict == Verdict::Flake) {
         std::string verdicts;
         for (const Attempt& a : tries)
@@ -120,6 +120,7 @@ AssembledRecords assembleRecords(const RunInputs& inputs, const RunUnits& plan, 
     backend.device = run.device;
     backend.expectedFailuresFile = joined(inputs.expected.files());
     backend.counts = results::countVerdicts(records.tests, combination.suffix);
+    backend.admissibleCounts = results::countAdmissibleVerdicts(records.tests, combination.suffix);
     backend.mutantCounts = results::countMutants(records.mutants, combination.suffix);
     backend.wallSeconds = run.workerSeconds;
     backend.taskTimes = run.taskTimes;

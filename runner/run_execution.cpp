@@ -56,7 +56,7 @@ class Execution {
           PartCallbacks callbacks;
           callbacks.taskDone = [&progress, this, c = part.combination](const WorkerTask& task,
                                                                        const results::TaskResult& result) {
-            const bool failed = task.isModelTest() && comparison::isRunFailure(applyExpectation(
+            const bool failed = !task.isMutantTask() && comparison::isRunFailure(applyExpectation(
                                                           result.rawVerdict, inputs_.expected.find(task.test)));
             progress.taskDone(c, failed);
           };
@@ -102,8 +102,8 @@ class Execution {
     return runs;
   }
 
-  // The model's tests that failed, crashed or timed out run again, just
-  // those, up to --flake-retries times (mutant tasks are meant to fail and
+  // The tests (the model's and the admissible variants') that failed,
+  // crashed or timed out run again, just those, up to --flake-retries times (mutant tasks are meant to fail and
   // are never retried; nor is a backend that is NotSupported or in error,
   // whose every test would do the same). Each round retries every
   // combination's tests, one worker per combination, up to --jobs at once.
@@ -118,7 +118,7 @@ class Execution {
         for (std::size_t i = 0; i < runs[c].tasks.size(); ++i) {
           const WorkerTask& task = runs[c].tasks[i];
           const Verdict last = runs[c].attempts[i].back().result.rawVerdict;
-          if (!task.isModelTest() || !worthRetrying(last, inputs_.expected.find(task.test))) continue;
+          if (task.isMutantTask() || !worthRetrying(last, inputs_.expected.find(task.test))) continue;
           indices.push_back(i);
           part.tasks.push_back(task);
         }
@@ -155,8 +155,13 @@ class Execution {
 
  private:
   WorkerPlan planOf(std::size_t combination, std::vector<WorkerTask> tasks) const {
-    return WorkerPlan{inputs_.combinations[combination], options_.device, options_.expectDriver,
-                      fs::absolute(setting_.outDir).string(), setting_.referenceCache.string(), std::move(tasks)};
+    return WorkerPlan{inputs_.combinations[combination],
+                      options_.device,
+                      options_.expectDriver,
+                      fs::absolute(setting_.outDir).string(),
+                      setting_.referenceCache.string(),
+                      options_.measureSharpness,
+                      std::move(tasks)};
   }
 
   const RunOptions& options_;

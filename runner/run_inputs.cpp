@@ -25,7 +25,7 @@ std::vector<CatalogueEntry> loadCatalogue(const std::string& scenesDir) {
 
 std::vector<shaders::Mutant> mutantsAskedFor(const RunOptions& options) {
   std::vector<shaders::Mutant> mutants;
-  if (options.noMutants) return mutants;
+  if (options.noMutants || (options.admissibleOnly && options.mutants.empty())) return mutants;
   for (const std::string& name : options.mutants) {
     const std::optional<shaders::Mutant> mutant = shaders::mutantFromName(name);
     if (!mutant || *mutant == shaders::Mutant::None) throw std::invalid_argument("unknown --mutant '" + name + "'");
@@ -34,6 +34,29 @@ std::vector<shaders::Mutant> mutantsAskedFor(const RunOptions& options) {
   if (!options.mutants.empty()) return mutants;
   for (const shaders::MutantName& m : shaders::mutantNames()) mutants.push_back(m.mutant);
   return mutants;
+}
+
+// --admissible NAME... or "all": the variants a shader realises somewhere
+// (a variant of the table's `none` rows is refused: it cannot run), in the
+// table's order, each once.
+std::vector<shaders::Admissible> admissibleAskedFor(const RunOptions& options) {
+  std::vector<shaders::Admissible> asked;
+  const bool all = std::find(options.admissible.begin(), options.admissible.end(), "all") != options.admissible.end();
+  for (const std::string& name : options.admissible) {
+    if (name == "all") continue;
+    const std::optional<shaders::Admissible> variant = shaders::admissibleFromName(name);
+    if (!variant || *variant == shaders::Admissible::None)
+      throw std::invalid_argument("unknown --admissible '" + name + "'");
+    if (shaders::admissibleEntry(*variant).apis == shaders::AdmissibleApis::None)
+      throw std::invalid_argument("--admissible " + name + " is not realised by any shader: " +
+                                  std::string(shaders::admissibleEntry(*variant).what));
+  }
+  for (const shaders::AdmissibleName& a : shaders::admissibleNames()) {
+    if (a.apis == shaders::AdmissibleApis::None) continue;
+    if (all || std::find(options.admissible.begin(), options.admissible.end(), a.name) != options.admissible.end())
+      asked.push_back(a.variant);
+  }
+  return asked;
 }
 
 }  // namespace
@@ -51,6 +74,13 @@ RunInputs checkRunInputs(const RunOptions& options) {
   for (const std::string& glob : options.excludes) inputs.selection.exclude(glob);
   for (const std::string& file : options.caselists) inputs.selection.loadCaselist(file);
   inputs.askedMutants = mutantsAskedFor(options);
+  inputs.askedAdmissible = admissibleAskedFor(options);
+  if (options.admissibleOnly && inputs.askedAdmissible.empty())
+    throw std::invalid_argument("nothing to run: --admissible-only needs --admissible NAME (or all)");
+  if (options.admissibleWitnesses && inputs.askedAdmissible.empty())
+    throw std::invalid_argument("--admissible-witnesses chooses scenes for the admissible variants: it needs --admissible");
+  if (options.admissibleOnly && options.mutantsOnly)
+    throw std::invalid_argument("--admissible-only and --mutants-only each run one check alone: choose one");
   if (options.timeoutSeconds <= 0) throw std::invalid_argument("--timeout must be positive");
   if (options.flakeRetries < 0) throw std::invalid_argument("--flake-retries must be 0 or more");
   if (options.jobs < 0) throw std::invalid_argument("--jobs must be 1 or more (0: one per core)");

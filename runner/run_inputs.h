@@ -28,7 +28,8 @@ struct RunInputs {
   ExpectedFailures expected;
   std::vector<BackendCombination> combinations;
   TestSelection selection;
-  std::vector<shaders::Mutant> askedMutants;  // --mutant, or every mutant; none with --no-mutants
+  std::vector<shaders::Mutant> askedMutants;  // --mutant, or every mutant; none with --no-mutants or --admissible-only
+  std::vector<shaders::Admissible> askedAdmissible;  // --admissible, in table order
   std::optional<Timings> timings;             // --timings
   int jobs = 1;                               // --jobs, 0 resolved to one per core
 };

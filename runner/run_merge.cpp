@@ -5,10 +5,12 @@
 #include "runner/backend_combination.h"
 #include "runner/evidence_limit.h"
 #include "runner/run_results.h"
+#include "shaders/shader_variant.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -136,11 +138,13 @@ std::vector<std::string> combinationOrder(const std::vector<Shard>& shards) {
 }
 
 std::vector<TestRecord> mergeTests(const std::vector<Shard>& shards, const std::vector<std::string>& suffixes) {
-  // The order of an unsharded run: combinations as above, then scenes by
-  // group and name (conformance::findSceneFiles).
+  // The order of an unsharded run: combinations as above, the model's
+  // tests before each admissible variant's (in the table's order), then
+  // scenes by group and name (conformance::findSceneFiles).
   const auto testOrder = [&](const TestRecord& t) {
     const auto at = std::find(suffixes.begin(), suffixes.end(), t.backend);
-    return std::tuple(std::size_t(at - suffixes.begin()), t.group, t.scene);
+    const auto variant = shaders::admissibleFromName(t.admissible.empty() ? "none" : t.admissible);
+    return std::tuple(std::size_t(at - suffixes.begin()), variant ? int(*variant) : INT_MAX, t.group, t.scene);
   };
   std::vector<TestRecord> tests;
   std::map<std::string, std::string> shardOfTest;
@@ -177,6 +181,7 @@ BackendRecord mergeBackend(const std::vector<const BackendRecord*>& parts, const
   merged.status = status.status;
   merged.message = status.message;
   merged.counts = results::countVerdicts(tests, merged.backend);
+  merged.admissibleCounts = results::countAdmissibleVerdicts(tests, merged.backend);
   merged.mutantCounts = results::countMutants(mutants, merged.backend);
   merged.log = "logs/" + merged.backend + ".log";
   return merged;
@@ -311,6 +316,7 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
     }
     merged.backends.push_back(mergeBackend(parts, merged.tests, merged.mutants));
   }
+  merged.admissible = describedAdmissibleRecords(merged.tests);
 
   double longest = 0;
   merged.mergedFrom = Json::array();
@@ -351,6 +357,7 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
     out << "merge: " << b.backend << ": " << comparison::backendStatusName(b.status)
         << backendCounts(b, !first.mutantsRun.empty()) << "\n";
   }
+  for (const std::string& line : admissibleLines(merged.admissible)) out << line << "\n";
   out << "merge: " << shards.size() << " shard(s), " << merged.tests.size() << " test(s) into "
       << (outDir / "results.json").string() << ", report in " << (outDir / "report" / "index.html").string()
       << std::endl;

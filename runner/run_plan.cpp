@@ -106,8 +106,9 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
   std::vector<WorkerPart> parts;
   for (std::size_t c = 0; c < combinations; ++c) {
     std::vector<WorkerTask> model;
-    std::vector<shaders::Mutant> mutantOrder;
-    std::map<shaders::Mutant, std::vector<WorkerTask>> byMutant;
+    using Shaders = std::pair<shaders::Mutant, shaders::Admissible>;
+    std::vector<Shaders> variantOrder;
+    std::map<Shaders, std::vector<WorkerTask>> byVariant;
     for (const RunUnit& unit : units) {
       if (unit.combination != c) continue;
       for (const WorkerTask& task : unit.tasks) {
@@ -115,8 +116,8 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
           model.push_back(task);
           continue;
         }
-        auto& list = byMutant[task.mutant];
-        if (list.empty()) mutantOrder.push_back(task.mutant);
+        auto& list = byVariant[{task.mutant, task.admissible}];
+        if (list.empty()) variantOrder.push_back({task.mutant, task.admissible});
         list.push_back(task);
       }
     }
@@ -125,12 +126,14 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
       const std::size_t end = std::min(model.size(), start + kModelTestsPerPart);
       parts.push_back({c, number++, {model.begin() + std::ptrdiff_t(start), model.begin() + std::ptrdiff_t(end)}});
     }
-    // Whole mutants, packed in order into parts of up to kModelTestsPerPart
-    // tasks: checked against its killers a mutant has a few tasks, and a
-    // worker per mutant would spend more on starting its backend than on them.
+    // Whole mutants and admissible variants, packed in order into parts of
+    // up to kModelTestsPerPart tasks: checked against its killers a mutant
+    // has a few tasks, and a worker per mutant would spend more on starting
+    // its backend than on them. A variant's tasks, one per scene, fill parts
+    // of their own.
     std::vector<WorkerTask> packed;
-    for (const shaders::Mutant mutant : mutantOrder) {
-      std::vector<WorkerTask>& block = byMutant[mutant];
+    for (const Shaders& variant : variantOrder) {
+      std::vector<WorkerTask>& block = byVariant[variant];
       if (!packed.empty() && packed.size() + block.size() > kModelTestsPerPart)
         parts.push_back({c, number++, std::exchange(packed, {})});
       packed.insert(packed.end(), block.begin(), block.end());

@@ -5,7 +5,10 @@
 #include "reports/csv_writer.h"
 #include "reports/html_report.h"
 #include "reports/junit_writer.h"
+#include "results/result_rules.h"
+#include "shaders/shader_variant.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -35,6 +38,45 @@ std::string backendCounts(const results::BackendRecord& backend, bool mutantsChe
     text += "; mutants: " + std::to_string(backend.mutantCounts.killed) + " killed, " +
             std::to_string(backend.mutantCounts.survived) + " survived";
   return text;
+}
+
+std::vector<results::AdmissibleRecord> describedAdmissibleRecords(const std::vector<results::TestRecord>& tests) {
+  std::vector<results::AdmissibleRecord> records = results::admissibleRecords(tests);
+  for (results::AdmissibleRecord& record : records)
+    if (const auto variant = shaders::admissibleFromName(record.variant);
+        variant && *variant != shaders::Admissible::None) {
+      record.what = std::string(shaders::admissibleEntry(*variant).what);
+      record.grant = std::string(shaders::admissibleEntry(*variant).grant);
+    }
+  return records;
+}
+
+std::vector<std::string> admissibleLines(const std::vector<results::AdmissibleRecord>& records) {
+  std::vector<std::string> lines;
+  std::vector<std::string> backends;
+  for (const results::AdmissibleRecord& r : records)
+    if (std::find(backends.begin(), backends.end(), r.backend) == backends.end()) backends.push_back(r.backend);
+  for (const std::string& backend : backends) {
+    int sound = 0, tests = 0;
+    std::vector<std::string> others;
+    for (const results::AdmissibleRecord& r : records) {
+      if (r.backend != backend) continue;
+      tests += r.tests;
+      if (r.status == comparison::AdmissibleStatus::Sound) {
+        ++sound;
+        continue;
+      }
+      std::string line = "run: admissible: " + backend + ": " + r.variant + " " +
+                         std::string(comparison::admissibleStatusName(r.status));
+      for (std::size_t i = 0; i < r.failed.size() && i < 5; ++i) line += (i == 0 ? ": " : ", ") + r.failed[i];
+      if (r.failed.size() > 5) line += " and " + std::to_string(r.failed.size() - 5) + " more";
+      others.push_back(line);
+    }
+    lines.push_back("run: admissible: " + backend + ": " + std::to_string(sound) + " variant(s) sound over " +
+                    std::to_string(tests) + " test(s)" + (others.empty() ? "" : ", " + std::to_string(others.size()) + " not"));
+    lines.insert(lines.end(), others.begin(), others.end());
+  }
+  return lines;
 }
 
 void removeStaleRunOutputs(const fs::path& outDir) {

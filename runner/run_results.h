@@ -22,6 +22,15 @@ std::string scenesDigest(const std::vector<std::filesystem::path>& sceneFiles, c
 // (the mutants only when the run checked some).
 std::string backendCounts(const results::BackendRecord& backend, bool mutantsChecked);
 
+// The admissible variants' summary: per backend, how many were sound, and
+// each variant that was not with its failed tests ("run: admissible: vulkan:
+// 15 sound" / "run: admissible: vulkan: quotient-up unsound: a.b@quotient-up.vulkan").
+// results::admissibleRecords of `tests`, with each variant's `what` and
+// `grant` from shaders/shader_interface.def.
+std::vector<results::AdmissibleRecord> describedAdmissibleRecords(const std::vector<results::TestRecord>& tests);
+
+std::vector<std::string> admissibleLines(const std::vector<results::AdmissibleRecord>& records);
+
 // Removes what an earlier run left in `outDir` that this one might not
 // rewrite (evidence, mutants, report, results files, part and retry logs),
 // so that nothing of it is mistaken for this run's.

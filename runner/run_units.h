@@ -18,7 +18,7 @@ namespace runner {
 
 struct RunUnits {
   std::vector<RunUnit> units;             // this shard's (every unit without --shard)
-  std::size_t testsInRun = 0;             // the model's tests of the whole run, every shard's
+  std::size_t testsInRun = 0;             // the tests (model's and variants') of the whole run, every shard's
   std::vector<shaders::Mutant> mutants;   // those asked for that have a scene to run, in the order asked
   nlohmann::ordered_json mutantsNotChecked = nlohmann::ordered_json::array();  // the others, with why
   nlohmann::ordered_json shard = nullptr;  // results.json's "shard": null, or this shard's description

@@ -65,6 +65,7 @@ void printSummary(const RunOptions& options, const results::RunRecord& run, cons
                   const std::vector<std::string>& budgetLines, long long imagesDropped, const fs::path& outDir,
                   std::ostream& out) {
   for (const results::BackendRecord& backend : run.backends) out << backendLine(backend, !run.mutantsRun.empty()) << "\n";
+  for (const std::string& line : admissibleLines(run.admissible)) out << line << "\n";
   for (const std::string& line : budgetLines) out << line << "\n";
   // Flakes apart: they passed, so the per-backend lines alone would hide them.
   if (!records.flakes.empty()) {
@@ -138,6 +139,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   run.tests = std::move(records.tests);
   run.backends = std::move(records.backends);
   run.mutants = std::move(records.mutants);
+  run.admissible = describedAdmissibleRecords(run.tests);
   run.durationSeconds = std::chrono::duration<double>(Clock::now() - started).count();
   writeRunOutputs(run.toJson(), outDir);
   printSummary(options, run, records, budgetLines, imagesDropped, outDir, out);

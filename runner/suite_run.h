@@ -37,6 +37,17 @@ struct RunOptions {
   // --mutants-all-scenes: every mutant against every selected scene (the
   // whole kill table), not only against its killers (suite/mutant_killers.def).
   bool mutantsAllScenes = false;
+  // --admissible: these admissible variants (SPEC 7), each against every
+  // selected scene on every combination that realises it, as tests named
+  // <group>.<name>@<variant>.<suffix>; "all" for every one. None by default.
+  std::vector<std::string> admissible;
+  bool admissibleOnly = false;        // --admissible-only: the variants' tests alone (no model test, no mutant)
+  // --admissible-witnesses: each variant against its witnesses alone
+  // (suite/admissible_witnesses.def), as ctest checks them.
+  bool admissibleWitnesses = false;
+  // --sharpness: each model test also bisects the smallest relative
+  // brightness error its comparison catches (docs/tolerances.md "Sharpness").
+  bool measureSharpness = false;
   int evidenceLimit = 50;             // --evidence-limit: failures that keep their images (all keep numbers)
   std::string evidenceUrl;            // --evidence-url: junit.xml's evidence link, "{test}" replaced
   bool listOnly = false;              // --list: print the selected tests (this shard's) and run nothing

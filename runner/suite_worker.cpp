@@ -123,7 +123,7 @@ class Worker {
   int run(int start) {
     for (int i = start; i < int(plan_.tasks.size()); ++i) {
       const WorkerTask& task = plan_.tasks[std::size_t(i)];
-      if (int status = ensureBackend(task.mutant); status != 0) return status;
+      if (int status = ensureBackend(task); status != 0) return status;
       testHooks(task.test);
       results::TaskResult result;
       result.test = task.test;
@@ -155,8 +155,9 @@ class Worker {
   }
 
   // One backend at a time, built for the task's shader variant.
-  int ensureBackend(shaders::Mutant mutant) {
-    if (backend_ && mutant == backendMutant_) return 0;
+  int ensureBackend(const WorkerTask& task) {
+    const shaders::Mutant mutant = task.mutant;
+    if (backend_ && task.sameShaders(backendShaders_)) return 0;
     backend_.reset();
     const backends::BackendEntry* entry = backends::findBuiltBackendEntry(plan_.combination.backend);
     try {
@@ -174,10 +175,11 @@ class Worker {
       if (const char* broken = std::getenv("LIGHTCTS_TEST_BACKEND_ERROR_FOR_MUTANT"); broken && name == broken)
         throw std::runtime_error("test hook: mutant " + name + "'s backend does not build");
       options.variant.mutant = mutant;
+      options.variant.admissible = task.admissible;
       backend_ = entry->create(options);
       const backends::DeviceInfo device = backend_->device();
       backends::requireExpectedDriver(device, plan_.expectDriver);
-      backendMutant_ = mutant;
+      backendShaders_ = task;
       if (!announced_) emit(out_, {{"kind", "device"}, {"device", deviceJson(device)}});
       announced_ = true;
       return 0;
@@ -205,10 +207,16 @@ class Worker {
     conformance::SceneReferences& references = referencesOf(task.scene);
     conformance::CheckOptions options;
     options.mutant = task.mutant;
+    options.measureSharpness = plan_.measureSharpness && task.isModelTest();
     const conformance::SceneCheck check = conformance::checkScene(references, *backend_, options);
     result.rawVerdict = check.verdict;
     result.message = check.qualityWarning;  // why a QualityWarning checks nothing; "" otherwise
     result.metrics = metricsJson(check);
+    if (check.caughtScale) {
+      // docs/results-format.md: the smallest relative brightness errors caught.
+      result.metrics["smallest_caught_brighter"] = finiteOrNull(check.caughtScale->brighter);
+      result.metrics["smallest_caught_darker"] = finiteOrNull(check.caughtScale->darker);
+    }
     result.frames = framesJson(check);
     result.poppingScore = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
     const conformance::StageTimings& t = check.timings;
@@ -218,7 +226,7 @@ class Worker {
     // Every failing test leaves evidence; a mutant leaves it for its first
     // kill; an expect_fail scene whose known mismatch was detected leaves it
     // too, so the report shows how far off that mismatch is.
-    const bool isMutant = !task.isModelTest();
+    const bool isMutant = task.isMutantTask();
     const bool detectedMismatch = !isMutant && references.prepared()->scene.expect.expectFail;
     if (check.verdict != comparison::Verdict::Fail && !detectedMismatch) return;
     if (isMutant && !evidencedMutants_.insert(task.mutant).second) return;
@@ -232,7 +240,7 @@ class Worker {
   const WorkerPlan& plan_;
   std::ostream& out_;
   std::unique_ptr<backends::Backend> backend_;
-  shaders::Mutant backendMutant_ = shaders::Mutant::None;
+  WorkerTask backendShaders_;  // the shader variant backend_ was built for
   bool announced_ = false;
   std::map<std::string, std::unique_ptr<conformance::SceneReferences>> references_;
   std::set<shaders::Mutant> evidencedMutants_;

@@ -15,6 +15,7 @@
 #define LIGHTCTS_COOKIES_GLSL
 
 #include "shader_interface.glsl"
+#include "admissible.glsl"
 #include "light_data.glsl"
 
 // lighting::GpuCookie, std140.
@@ -62,7 +63,7 @@ float textureCookieValue(Cookie cookie, sampler2D image, vec3 p) {
   if (kind == kCookieSpot) {
     // The backward cone: q.z <= 0 gives 0, not the mirrored projection.
     if (q.z <= 0.0) return 0.0;
-    uv = 0.5 + q.xy * (cookie.params.y / q.z);
+    uv = 0.5 + q.xy * quotient(cookie.params.y, q.z);
   } else {
     uv = q.xy;  // tiled: the sampler repeats
     if (MUTANT == MUTANT_DIRECTIONAL_COOKIE_CLAMPED) {
@@ -72,7 +73,7 @@ float textureCookieValue(Cookie cookie, sampler2D image, vec3 p) {
     }
   }
   if (MUTANT == MUTANT_COOKIE_V_FLIPPED) uv.y = 1.0 - uv.y;
-  return textureLod(image, uv, 0.0).r;
+  return filteredTexel(image, uv, kind == kCookieDirectional, frameData.filterGrid.x).r;
 }
 
 // SPEC 3.10 for a cube slot: the direction p - position, seamless.

@@ -4,6 +4,7 @@
 // albedo) plus the decoded light buffer, into the image the forward path
 // renders. Background: base 0 and the buffer's clear value decode to 0.
 #include "shader_interface.glsl"
+#include "admissible.glsl"
 #include "deferred_data.glsl"
 
 layout(location = 0) out vec4 outColor;
@@ -12,7 +13,7 @@ vec3 decodeLight(vec3 x) {
   if (!ldr8Buffer()) return x;
   // Mutant: no clamp, so a texel that reached 0 decodes to +infinity.
   if (MUTANT == MUTANT_UNCLAMPED_LDR_DECODE) return -log2(x);
-  return -log2(max(x, vec3(kLdr8SmallestDecoded)));
+  return -logarithm2(max(x, vec3(kLdr8SmallestDecoded)));
 }
 
 void main() {

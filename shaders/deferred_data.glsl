@@ -14,6 +14,7 @@ layout(std140, LIGHTCTS_BINDING(DeferredFrameBlock)) uniform DeferredFrameBlock 
   ivec4 bufferFormat;          // x: 0 hdr32, 1 hdr16, 2 ldr8 (GpuDeferredFrameBlock::buffer; `buffer` is a GLSL keyword); y: 0
 } deferredFrame;
 
+const int kBufferHdr16 = 1;
 const int kBufferLdr8 = 2;
 
 // The specialised shader knows the buffer from LDR8_BUFFER; the full shader
@@ -22,6 +23,10 @@ const int kBufferLdr8 = 2;
 bool ldr8Buffer() {
   return LDR8_BUFFER && deferredFrame.bufferFormat[OPAQUE_UNIFORM_READS ? deferredFrame.bufferFormat.y : 0] == kBufferLdr8;
 }
+
+// Whether the light buffer is RGBA16F, for the half-toward-zero admissible
+// variant alone: the model leaves the conversion to the attachment.
+bool hdr16Buffer() { return deferredFrame.bufferFormat.x == kBufferHdr16; }
 
 // ldr8 stores exp2(-c) and decodes -log2(max(x, 1/255)): the clamp keeps a
 // fully dark texel (x = 0) finite; it saturates the light sum at log2(255).

@@ -44,7 +44,7 @@ void main() {
   vec3 ndc = vec3(ndcXY, normalDepth.w);
   vec4 world = deferredFrame.inverseViewProjection * vec4(ndc, 1.0);
   // Camera-relative; absolute in the absolute-coordinates mutant.
-  vec3 p = mutantWorldPosition(world.xyz / world.w);
+  vec3 p = mutantWorldPosition(quotient(world.xyz, world.w));
   vec3 N = normalDepth.xyz;
   // The forward pass's BRDF for this one light (SPEC 3.8).
   SurfaceBrdf surface = surfaceBrdf(albedo.rgb, material, N, viewDirection(p));
@@ -54,5 +54,5 @@ void main() {
   LightSums sums = LightSums(vec3(0.0), vec3(0.0));
   addLight(sums, surface, radiance, L);
   vec3 c = brdfColour(surface, sums);
-  outLight = ldr8Buffer() ? vec4(exp2(-c), 1.0) : vec4(c, 1.0);
+  outLight = ldr8Buffer() ? vec4(power2(-c), 1.0) : vec4(hdr16Buffer() ? halfTowardZero(c) : c, 1.0);
 }

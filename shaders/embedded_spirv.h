@@ -9,31 +9,32 @@
 
 namespace shaders {
 
-// Forward path; forward.vert is also the deferred G-buffer pass's vertex stage.
-std::span<const std::uint32_t> forwardVertexSpirv();
-std::span<const std::uint32_t> forwardFragmentSpirv();
-// Deferred path (SPEC 3.7): G-buffer fragment stage, light pass (one draw per
-// light volume), composite (full-screen triangle from gl_VertexIndex, 3
-// vertices, no vertex input).
-std::span<const std::uint32_t> gbufferFragmentSpirv();
-std::span<const std::uint32_t> deferredLightVertexSpirv();
-std::span<const std::uint32_t> deferredLightFragmentSpirv();
-std::span<const std::uint32_t> deferredCompositeVertexSpirv();
-std::span<const std::uint32_t> deferredCompositeFragmentSpirv();
-// The depth-only shadow-map pass (SPEC 3.9): one draw per object per view.
-std::span<const std::uint32_t> shadowCasterVertexSpirv();
-std::span<const std::uint32_t> shadowCasterFragmentSpirv();
+enum class Stage {
+  // Forward path; forward.vert is also the deferred G-buffer pass's vertex stage.
+  ForwardVertex,
+  ForwardFragment,
+  // Deferred path (SPEC 3.7): G-buffer fragment stage, light pass (one draw
+  // per light volume), composite (full-screen triangle from gl_VertexIndex,
+  // 3 vertices, no vertex input).
+  GbufferFragment,
+  DeferredLightVertex,
+  DeferredLightFragment,
+  DeferredCompositeVertex,
+  DeferredCompositeFragment,
+  // The depth-only shadow-map pass (SPEC 3.9): one draw per object per view.
+  ShadowCasterVertex,
+  ShadowCasterFragment,
+};
+
+// Which of a stage's two builds: the model's, which every shipped pipeline
+// runs and which holds no admissible variant's code, or the admissible
+// variants' (shaders/admissible.glsl), chosen by the ADMISSIBLE constant.
+enum class ShaderBuild { Model, AdmissibleVariants };
+
+std::span<const std::uint32_t> spirv(Stage stage, ShaderBuild build);
 
 // GLSL 330 core; each specialization constant n is a macro
 // SPIRV_CROSS_CONSTANT_ID_n with the shader's default unless defined first.
-std::string_view forwardVertexGlsl330();
-std::string_view forwardFragmentGlsl330();
-std::string_view gbufferFragmentGlsl330();
-std::string_view deferredLightVertexGlsl330();
-std::string_view deferredLightFragmentGlsl330();
-std::string_view deferredCompositeVertexGlsl330();
-std::string_view deferredCompositeFragmentGlsl330();
-std::string_view shadowCasterVertexGlsl330();
-std::string_view shadowCasterFragmentGlsl330();
+std::string_view glsl330(Stage stage, ShaderBuild build);
 
 }  // namespace shaders

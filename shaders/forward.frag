@@ -21,7 +21,7 @@ const int kLegacyPixelLights = 4;
 
 void main() {
   vec3 p = vPosition;
-  vec3 N = normalize(vNormal);
+  vec3 N = unitVector(vNormal);
   vec4 mask = objectShadowMask(vLightmapUv);
   SurfaceBrdf surface = surfaceBrdf(objectData.albedo.rgb, objectMaterial(), N, viewDirection(p));
   LightSums sums = unlitSums(vLightmapUv);
@@ -33,7 +33,7 @@ void main() {
   // (light_data.glsl), the load is not one a compiler hoists out of the loop.
   if (DIRECTIONAL_LIGHTS && !legacyProfile())
     for (int i = 0, count = frameData.lightCounts[opaque(0)]; i < count; ++i) {
-      vec3 radiance = directionalLight(frameData.directionalLights[i], N, mask, textures, L);
+      vec3 radiance = directionalLight(frameData.directionalLights[summationIndex(i, count)], N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   if (objectListInUse()) {
@@ -43,7 +43,7 @@ void main() {
     // Mutant: srp's loop runs to count (objectLightIndex wraps past 8).
     if (MUTANT == MUTANT_UNSANITISED_OBJECT_LOOP && !legacyProfile()) count = objectListCount();
     for (int k = 0; k < count; ++k) {
-      vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(k)], p, N, mask, textures, L);
+      vec3 radiance = packedLight(frameData.otherLights[objectLightIndex(summationIndex(k, count))], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   } else if (clusteredLights()) {
@@ -54,11 +54,11 @@ void main() {
     }
   } else {
     for (int i = 0, count = frameData.lightCounts[opaque(1)]; i < count; ++i) {
-      vec3 radiance = packedLight(frameData.otherLights[i], p, N, mask, textures, L);
+      vec3 radiance = packedLight(frameData.otherLights[summationIndex(i, count)], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   }
   // Vertex lights: the legacy profile, which is Lambert only (SPEC 2).
-  if (legacyProfile()) sums.radiance += vVertexLighting;
+  if (legacyProfile()) sums.radiance = flushed(sums.radiance + vVertexLighting);
   outColor = vec4(brdfColour(surface, sums), 1.0);
 }

@@ -23,7 +23,7 @@ const int kMaxLightsPerObject = 8;
 
 void main() {
   vec4 position = objectData.model * vec4(inPosition, 1.0);
-  vec3 N = normalize(mat3(objectData.normalMatrix) * inNormal);
+  vec3 N = unitVector(mat3(objectData.normalMatrix) * inNormal);
   // Camera-relative; absolute in the absolute-coordinates mutant.
   vec3 worldPosition = mutantWorldPosition(position.xyz);
   vPosition = worldPosition;
@@ -39,10 +39,13 @@ void main() {
     vec3 vertexNormal = MUTANT == MUTANT_VERTEX_NORMAL_NOT_NORMALISED ? mat3(objectData.model) * inNormal : N;
     vec3 L;  // unused: vertex lights are Lambert (the legacy profile has no srp BRDF)
     LightTextures textures = lightTexturesAtVertex(worldPosition);  // SPEC 3.10 at the vertex; no shadow map
-    for (int k = kLegacyPixelLights; k < count; ++k)
-      vVertexLighting +=
-          packedLight(frameData.otherLights[objectLightIndex(k)], worldPosition, vertexNormal, vec4(1.0), textures, L);
+    for (int k = kLegacyPixelLights; k < count; ++k) {
+      int listed = kLegacyPixelLights + summationIndex(k - kLegacyPixelLights, count - kLegacyPixelLights);
+      vVertexLighting = flushed(vVertexLighting + packedLight(frameData.otherLights[objectLightIndex(listed)],
+                                                              worldPosition, vertexNormal, vec4(1.0), textures, L));
+    }
   }
-  gl_Position = frameData.viewProjection * position;
+  // The snapping variants move the vertex on the device's sub-pixel grid (admissible.glsl).
+  gl_Position = snappedClipPosition(frameData.viewProjection * position, frameData.rasterGrid, objectData.raster.x != 0);
   vClip = gl_Position;
 }

@@ -24,7 +24,7 @@ layout(location = 4) out vec4 outMaterial;  // x metallic, y smoothness, z 1 srp
 void main() {
   vec3 albedo = objectData.albedo.rgb;
   outAlbedo = vec4(albedo, 1.0);
-  vec3 N = normalize(vNormal);
+  vec3 N = unitVector(vNormal);
   outNormal = vec4(N, gl_FragCoord.z);
   // The ambient and baked terms, times the BRDF's diffuse colour (SPEC 3.8;
   // A for Lambert): exactly the forward pass's sums before any light.

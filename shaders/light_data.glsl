@@ -27,6 +27,9 @@ layout(std140, LIGHTCTS_BINDING(FrameBlock)) uniform FrameBlock {
   vec4 clusterForward;  // xyz: the camera's forward axis
   vec4 clusterSlicing;  // x: slice scale, y: slice bias, z: 1 exponential, 0 linear; w: the near depth
   ivec4 opaqueZero;     // all zero; see opaque() below
+  // Read by the admissible variants alone (admissible.glsl), never by the model:
+  vec4 rasterGrid;      // xy: the image's size in pixels; z: 2^subPixelPrecisionBits; w: framebuffer y against NDC y (+1 OpenGL, -1 Vulkan)
+  vec4 filterGrid;      // x: 2^subTexelPrecisionBits
 } frameData;
 
 // `index`, at an offset the shader compiler cannot know: every uniform that

@@ -6,6 +6,7 @@
 #define LIGHTCTS_LIGHTING_GLSL
 
 #include "shader_interface.glsl"
+#include "admissible.glsl"
 #include "light_data.glsl"
 #include "cookies.glsl"
 #include "shadows.glsl"
@@ -25,24 +26,6 @@ float lightTextureAttenuation(Light light, LightTextures textures) {
   return cookieAttenuation(light, textures.cookies) * shadowMapAttenuation(light, textures.shadows);
 }
 
-// SPEC 1.
-float saturate(float x) { return clamp(x, 0.0, 1.0); }
-float square(float x) { return x * x; }
-
-// SPEC 3.2: distSqr = max(dot(ray, ray), 1e-5), so L and 1/distSqr stay
-// finite when the point lies on the light.
-float clampedDistanceSquared(vec3 ray) {
-  float minimum = MUTANT == MUTANT_DISTANCE_CLAMP_1E_4 ? 1e-4 : 1e-5;
-  return max(dot(ray, ray), minimum);
-}
-
-// SPEC 3.2: rangeAtt = square(saturate(1 - square(distSqr * invRangeSq))).
-float rangeAttenuation(float distSqr, float invRangeSq) {
-  float window = saturate(1.0 - square(distSqr * invRangeSq));
-  if (MUTANT == MUTANT_UNSQUARED_RANGE) return window;
-  return square(window);
-}
-
 // Mutant: spot factors for the full cone angle taken as the half angle. The
 // shader recovers cosOuter = -b/a and cosInner = cosOuter + 1/a (exact where
 // a was not clamped) and doubles both angles: cos(2t) = 2 cos^2(t) - 1.
@@ -54,16 +37,6 @@ vec2 fullAngleSpotFactors(vec2 factors) {
   float cosInnerFull = 2.0 * cosInner * cosInner - 1.0;
   float a = 1.0 / max(cosInnerFull - cosOuterFull, 0.001);
   return vec2(a, -cosOuterFull * a);
-}
-
-// SPEC 3.2 with the factors of SPEC 3.3 (a, b; the CPU applied 3.4's legacy
-// inner angle): spotAtt = square(saturate(dot(spotDir, L) * a + b)).
-float spotAttenuation(vec3 spotDirection, vec3 L, vec2 factors) {
-  if (MUTANT == MUTANT_FULL_SPOT_ANGLE) factors = fullAngleSpotFactors(factors);
-  if (MUTANT == MUTANT_SPOT_DIRECTION_FLIPPED) spotDirection = -spotDirection;
-  float cone = saturate(dot(spotDirection, L) * factors.x + factors.y);
-  if (MUTANT == MUTANT_UNSQUARED_SPOT) return cone;
-  return square(cone);
 }
 
 // SPEC 3.5: lerp(1, mask[c], strength) for a light with channel c >= 0 on an
@@ -79,18 +52,6 @@ float shadowMaskAttenuation(Light light, vec4 mask) {
   if (MUTANT == MUTANT_SHADOW_MASK_CHANNEL_OFF_BY_ONE) channel = (channel + 1) % 4;
   float strength = MUTANT == MUTANT_SHADOW_STRENGTH_IGNORED ? 1.0 : light.spotAngles.w;
   return mix(1.0, mask[channel], strength);
-}
-
-// SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask, times the cookie
-// (SPEC 3.10) and the real-time shadow (SPEC 3.9) (`textures`: every slot's
-// value at this point): the radiance the BRDF weighs (addLight); L is
-// returned for the specular lobe.
-vec3 directionalLight(Light light, vec3 N, vec4 mask, LightTextures textures, out vec3 L) {
-  L = light.position.xyz;
-  float cosine = dot(N, L);
-  if (MUTANT != MUTANT_DIRECTIONAL_NOT_SATURATED) cosine = saturate(cosine);
-  float attenuation = shadowMaskAttenuation(light, mask) * lightTextureAttenuation(light, textures);
-  return light.color.rgb * (cosine * attenuation);
 }
 
 // Mutant: where the absolute-coordinates mutant puts positions, in float32:
@@ -121,20 +82,38 @@ float mutantAttenuationPrecision(float attenuation) {
   return attenuation;
 }
 
+
+// SPEC 3.1-3.2's terms, in the subset of GLSL the reference compiles too.
+#define LIGHTCTS_TERM
+#define real float
+#define real3 vec3
+#define MUTANT_ACTIVE(name) (MUTANT == name)
+#include "light_terms.glsl"
+#undef MUTANT_ACTIVE
+#undef real3
+#undef real
+#undef LIGHTCTS_TERM
+
+// SPEC 3.1: finalColor * saturate(dot(N, L)) * shadowMask, times the cookie
+// (SPEC 3.10) and the real-time shadow (SPEC 3.9) (`textures`: every slot's
+// value at this point): the radiance the BRDF weighs (addLight); L is
+// returned for the specular lobe.
+vec3 directionalLight(Light light, vec3 N, vec4 mask, LightTextures textures, out vec3 L) {
+  L = light.position.xyz;
+  float attenuation = shadowMaskAttenuation(light, mask) * lightTextureAttenuation(light, textures);
+  return flushed(directionalRadiance(light.color.rgb, L, attenuation, N));
+}
+
 // SPEC 3.2: point and spot lights at camera-relative position p (the
 // absolute-coordinates mutant passes absolute ones).
 vec3 localLight(Light light, vec3 p, vec3 N, vec4 mask, LightTextures textures, out vec3 L) {
-  vec3 ray = mutantWorldPosition(light.position.xyz) - p;
-  float distSqr = clampedDistanceSquared(ray);
-  L = ray * inversesqrt(distSqr);
-  float attenuation = rangeAttenuation(distSqr, light.color.w) / distSqr;
-  if (SPOT_LIGHTS) attenuation *= spotAttenuation(light.spotDirection.xyz, L, light.spotAngles.xy);
-  attenuation *= shadowMaskAttenuation(light, mask);
-  attenuation *= lightTextureAttenuation(light, textures);  // SPEC 3.10, 3.9
-  attenuation = mutantAttenuationPrecision(attenuation);
-  float cosine = dot(N, L);
-  if (MUTANT != MUTANT_LOCAL_NOT_SATURATED) cosine = saturate(cosine);
-  return light.color.rgb * (cosine * attenuation);
+  vec3 position = mutantWorldPosition(light.position.xyz);
+  L = towardLocalLight(position, p);
+  vec2 factors = light.spotAngles.xy;
+  if (MUTANT == MUTANT_FULL_SPOT_ANGLE) factors = fullAngleSpotFactors(factors);
+  vec3 spotDirection = MUTANT == MUTANT_SPOT_DIRECTION_FLIPPED ? -light.spotDirection.xyz : light.spotDirection.xyz;
+  return flushed(localRadiance(light.color.rgb, position, light.color.w, spotDirection, factors.x, factors.y,
+                               shadowMaskAttenuation(light, mask), lightTextureAttenuation(light, textures), p, N));
 }
 
 // A light of the packed `otherLights` array. In the legacy profile it holds
@@ -175,7 +154,7 @@ vec3 viewDirection(vec3 p) {
     vec3 absolute = p + frameData.cameraPosition.xyz;
     return normalize(frameData.cameraPosition.xyz * frameData.cameraPosition.w - absolute);
   }
-  return normalize(-p);
+  return unitVector(-p);
 }
 
 // `material`: x metallic, y smoothness, z 1 for srp (GpuObjectBlock::material,
@@ -202,15 +181,15 @@ SurfaceBrdf surfaceBrdf(vec3 albedo, vec4 material, vec3 N, vec3 V) {
 // SPEC 3.8's specularStrength in direction L.
 float specularStrength(SurfaceBrdf s, vec3 L) {
   vec3 h = L + s.view;
-  vec3 H = h * inversesqrt(max(dot(h, h), kSafeNormalizeFloor));  // SafeNormalize: L = -V gives 0
+  vec3 H = h * inverseSqrt(max(dotProduct(h, h), kSafeNormalizeFloor));  // SafeNormalize: L = -V gives 0
   if (MUTANT == MUTANT_HALF_VECTOR_NOT_NORMALISED) H = h;
-  float nh2 = square(saturate(dot(s.normal, H)));
-  float lh2 = square(saturate(dot(L, H)));
+  float nh2 = square(saturate(dotProduct(s.normal, H)));
+  float lh2 = square(saturate(dotProduct(L, H)));
   float r2 = square(s.roughness);
   float offset = MUTANT == MUTANT_D2_WITHOUT_EPSILON ? 1.0 : kLobeDenominatorOffset;
   float d2 = square(nh2 * (r2 - 1.0) + offset);
   float lh2Floor = MUTANT == MUTANT_LH2_NOT_CLAMPED ? lh2 : max(kMinLh2, lh2);
-  return r2 / (d2 * lh2Floor * (s.roughness * 4.0 + 2.0));
+  return quotient(r2, d2 * lh2Floor * (s.roughness * 4.0 + 2.0));
 }
 
 // SPEC 3.8's sum, split where the colours factor out: the diffuse colour
@@ -223,8 +202,8 @@ struct LightSums {
 };
 
 void addLight(inout LightSums sums, SurfaceBrdf s, vec3 radiance, vec3 L) {
-  sums.radiance += radiance;
-  if (s.lobe) sums.specular += radiance * specularStrength(s, L);
+  sums.radiance = flushed(sums.radiance + radiance);
+  if (s.lobe) sums.specular = flushed(sums.specular + radiance * specularStrength(s, L));
 }
 
 // finalColor * saturate(dot(N, L)) * attenuation * directBRDF summed, plus

@@ -16,6 +16,7 @@ layout(std140, LIGHTCTS_BINDING(ObjectBlock)) uniform ObjectBlock {
   ivec4 lightIndices[2];  // packed indices into otherLights, -1 past the end
   vec4 lightmapTransform;
   vec4 material;        // x: metallic, y: smoothness, z: 1 for the srp BRDF (SPEC 3.8), 0 Lambert
+  ivec4 raster;         // x: 1 when every vertex lies in front of the camera (the snapping variants snap only such objects)
 } objectData;
 
 // The full shader asks the object whether its list is in use.

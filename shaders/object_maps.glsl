@@ -12,7 +12,8 @@ layout(LIGHTCTS_BINDING(shadowMaskTexture)) uniform sampler2D shadowMaskTexture;
 
 // SPEC 3.5: the object's shadow mask at the fragment, all ones without one.
 vec4 objectShadowMask(vec2 lightmapUv) {
-  if (SHADOW_MASK && objectData.lightList[opaque(2)] != 0) return texture(shadowMaskTexture, lightmapUv);
+  if (SHADOW_MASK && objectData.lightList[opaque(2)] != 0)
+    return filteredTexel(shadowMaskTexture, lightmapUv, false, frameData.filterGrid.x);
   return vec4(1.0);
 }
 
@@ -22,7 +23,8 @@ vec4 objectShadowMask(vec2 lightmapUv) {
 LightSums unlitSums(vec2 lightmapUv) {
   LightSums sums = LightSums(vec3(0.0), vec3(0.0));
   if (AMBIENT) sums.radiance += frameData.ambient.rgb;
-  if (LIGHTMAP && objectData.lightList[opaque(1)] != 0) sums.radiance += texture(lightmapTexture, lightmapUv).rgb;
+  if (LIGHTMAP && objectData.lightList[opaque(1)] != 0)
+    sums.radiance += filteredTexel(lightmapTexture, lightmapUv, false, frameData.filterGrid.x).rgb;
   return sums;
 }
 

@@ -28,6 +28,7 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   // The full shader asks FrameBlock.lightCounts.w (clusters.glsl).
   v[kClusteredLights] = all || f.clusteredLights;
   v[kMutant] = static_cast<std::int32_t>(variant.mutant);
+  v[kAdmissible] = static_cast<std::int32_t>(variant.admissible);
   v[kOpaqueUniformReads] = variant.opaqueUniformReads;
   // The full shader looks up every slot; the specialised one those in use.
   v[kCookieTextures] = all ? lighting::kMaxCookieTextures : f.cookieTextures;
@@ -38,6 +39,10 @@ ConstantValues constantValues(const lighting::ShaderFeatures& f, const ShaderVar
   v[kLightCookieSlot] = kEverySlotInUse;
   v[kLightShadowSlot] = kEverySlotInUse;
   return v;
+}
+
+ShaderBuild shaderBuildOf(const ConstantValues& constants) {
+  return constants[kAdmissible] != 0 ? ShaderBuild::AdmissibleVariants : ShaderBuild::Model;
 }
 
 ConstantValues lightPassConstants(ConstantValues v, const lighting::LightPassSlots& slots,

@@ -2,6 +2,7 @@
 // for the C++ side that fills them in (Vulkan specialization info, GL defines).
 #pragma once
 
+#include "shaders/embedded_spirv.h"
 #include "shaders/shader_variant.h"
 #include "lighting/frame.h"
 
@@ -39,6 +40,10 @@ constexpr bool constantIsInteger(std::uint32_t id) { return id < kConstantCount 
 // them in 32 bits): what `frame` uses, or everything for the full shader.
 using ConstantValues = std::array<std::int32_t, kConstantCount>;
 ConstantValues constantValues(const lighting::ShaderFeatures& features, const ShaderVariant& variant);
+// Which build of the stages (shaders/embedded_spirv.h) runs `constants`: the
+// admissible variants' where ADMISSIBLE is not 0, the model's otherwise.
+ShaderBuild shaderBuildOf(const ConstantValues& constants);
+
 // A deferred light pass draw's constants: the frame's, with its light's
 // texture slots (lighting::LightVolume::slots) as the only ones it looks up.
 // The full shader keeps every slot.

@@ -28,11 +28,22 @@ set(glsl "// ${si_generated_by}
 #ifndef LIGHTCTS_SHADER_INTERFACE_GLSL
 #define LIGHTCTS_SHADER_INTERFACE_GLSL
 
+// The stages are built twice (shaders/CMakeLists.txt): the model's build, with
+// LIGHTCTS_ADMISSIBLE_VARIANTS 0, holds no admissible variant's code and has
+// no ADMISSIBLE constant; the variants' build has both.
+#ifndef LIGHTCTS_ADMISSIBLE_VARIANTS
+#define LIGHTCTS_ADMISSIBLE_VARIANTS 0
+#endif
+
 // Specialization constants.
 ")
 math(EXPR last "${si_constant_count} - 1")
 foreach(id RANGE ${last})
-  string(APPEND glsl "layout(constant_id = ${id}) const ${si_constant_${id}_type} ${si_constant_${id}_name} = ${si_constant_${id}_default};\n")
+  set(declaration "layout(constant_id = ${id}) const ${si_constant_${id}_type} ${si_constant_${id}_name} = ${si_constant_${id}_default};\n")
+  if(si_constant_${id}_name STREQUAL "ADMISSIBLE")
+    set(declaration "#if LIGHTCTS_ADMISSIBLE_VARIANTS\n${declaration}#endif\n")
+  endif()
+  string(APPEND glsl "${declaration}")
 endforeach()
 string(APPEND glsl "
 // Mutants of the shader kind: each is a test `MUTANT == MUTANT_<NAME>`.
@@ -41,6 +52,15 @@ const int MUTANT_NONE = 0;
 foreach(n RANGE 1 ${si_mutant_count})
   if(si_mutant_${n}_kind STREQUAL "shader")
     string(APPEND glsl "const int ${si_mutant_${n}_glsl} = ${n};  // ${si_mutant_${n}_what}\n")
+  endif()
+endforeach()
+string(APPEND glsl "
+// Admissible variants realised in the shaders: each is a test `ADMISSIBLE == ADMISSIBLE_<NAME>`.
+const int ADMISSIBLE_NONE = 0;
+")
+foreach(n RANGE 1 ${si_admissible_count})
+  if(NOT si_admissible_${n}_apis STREQUAL "none")
+    string(APPEND glsl "const int ${si_admissible_${n}_glsl} = ${n};  // ${si_admissible_${n}_what}\n")
   endif()
 endforeach()
 string(APPEND glsl "
@@ -95,6 +115,20 @@ endforeach()
 string(APPEND cpp "};
 
 inline constexpr std::array<MutantName, ${si_mutant_count}> kMutantNames = {{
+${names}}};
+
+enum class Admissible : int {
+  None = 0,
+")
+set(names "")
+foreach(n RANGE 1 ${si_admissible_count})
+  string(APPEND cpp "  ${si_admissible_${n}_cpp} = ${n},  // ${si_admissible_${n}_apis}\n")
+  si_camel(apis "${si_admissible_${n}_apis}" "-" FALSE)
+  string(APPEND names "    {Admissible::${si_admissible_${n}_cpp}, \"${si_admissible_${n}_spelling}\", AdmissibleApis::${apis},\n     \"${si_admissible_${n}_what}\",\n     \"${si_admissible_${n}_grant}\"},\n")
+endforeach()
+string(APPEND cpp "};
+
+inline constexpr std::array<AdmissibleName, ${si_admissible_count}> kAdmissibleNames = {{
 ${names}}};
 
 enum ConstantId : std::uint32_t {

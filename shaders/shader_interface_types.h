@@ -27,6 +27,24 @@ struct MutantName {
   std::string_view what;  // one line for listings and reports
 };
 
+// Deliberately different but legal implementations (SPEC 7, admissible
+// variants), selected by the specialization constant ADMISSIBLE. 0, None, is
+// the model itself.
+enum class Admissible : int;
+
+// Where a variant is realised: on every backend, on Vulkan only (OpenGL's
+// GLSL 330 cannot express it), or nowhere (a freedom listed for
+// completeness that no shader can realise on these drivers).
+enum class AdmissibleApis { All, Vulkan, None };
+
+struct AdmissibleName {
+  Admissible variant;
+  std::string_view name;  // the --admissible spelling
+  AdmissibleApis apis;
+  std::string_view what;   // what it does, one line
+  std::string_view grant;  // the specification's sentence that allows it
+};
+
 namespace binding {
 
 // A uniform block: Vulkan's set and binding, and the OpenGL binding point the

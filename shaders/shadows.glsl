@@ -18,6 +18,7 @@
 #define LIGHTCTS_SHADOWS_GLSL
 
 #include "shader_interface.glsl"
+#include "admissible.glsl"
 #include "light_data.glsl"
 
 // lighting::GpuShadow, std140.
@@ -59,7 +60,7 @@ struct ShadowValues {
 
 // SPEC 3.9: p' = p + normal_bias N + depth_bias L, L toward the light at p.
 vec3 shadowReceiver(Shadow shadow, vec3 p, vec3 N) {
-  vec3 L = shadow.light.w == 0.0 ? shadow.light.xyz : normalize(shadow.light.xyz - p);
+  vec3 L = shadow.light.w == 0.0 ? shadow.light.xyz : unitVector(shadow.light.xyz - p);
   // Mutants: the depth bias left out; the normal bias along L instead of N.
   float depthBias = MUTANT == MUTANT_SHADOW_DEPTH_BIAS_IGNORED ? 0.0 : shadow.bias.x;
   vec3 normalOffset = MUTANT == MUTANT_SHADOW_NORMAL_BIAS_ALONG_L ? L : N;
@@ -80,7 +81,7 @@ float tentCompare(sampler2DShadow map, vec2 uv, float depth, float n) {
   vec2 w2 = ((1.5 + o) - 0.5 - max(o, 0.0) * max(o, 0.0)) * (4.0 / 9.0);
   vec2 w3 = ((o + 0.5) * (o + 0.5) * 0.5) * (4.0 / 9.0);
   vec2 wa = w0 + w1, wb = w2 + w3;
-  vec2 a = (c + w1 / wa - 1.5) / n, b = (c + w3 / wb + 0.5) / n;
+  vec2 a = quotient(c + quotient(w1, wa) - 1.5, n), b = quotient(c + quotient(w3, wb) + 0.5, n);
   return wa.x * wa.y * compareAt(map, vec2(a.x, a.y), depth) + wb.x * wa.y * compareAt(map, vec2(b.x, a.y), depth) +
          wa.x * wb.y * compareAt(map, vec2(a.x, b.y), depth) + wb.x * wb.y * compareAt(map, vec2(b.x, b.y), depth);
 }
@@ -91,7 +92,7 @@ float textureShadowValue(Shadow shadow, sampler2DShadow map, vec3 p, vec3 N) {
   if (kind == kShadowNone) return 1.0;
   vec4 clip = shadow.clipFromCameraRelative * vec4(shadowReceiver(shadow, p, N), 1.0);
   if (kind == kShadowPerspective && clip.w <= 0.0) return 1.0;
-  vec3 m = clip.xyz / clip.w;
+  vec3 m = quotient(clip.xyz, clip.w);
   vec2 uv = m.xy * 0.5 + 0.5;
   float depth = m.z;
   if (uv.x < 0.0 || uv.x > 1.0 || uv.y < 0.0 || uv.y > 1.0 || depth < 0.0 || depth > 1.0) return 1.0;
@@ -108,7 +109,7 @@ float cubeShadowValue(Shadow shadow, samplerCubeShadow map, vec3 p, vec3 N) {
   if (int(shadow.params.x) == kShadowNone) return 1.0;
   vec3 d = shadowReceiver(shadow, p, N) - shadow.light.xyz;
   vec3 m = abs(d);
-  float depth = shadow.bias.z - shadow.bias.w / max(m.x, max(m.y, m.z));
+  float depth = shadow.bias.z - quotient(shadow.bias.w, max(m.x, max(m.y, m.z)));
   if (depth < 0.0 || depth > 1.0) return 1.0;
   // Mutant: the face chosen by the wrong axis (x and z exchanged).
   if (MUTANT == MUTANT_CUBE_SHADOW_WRONG_AXIS) d = d.zyx;
@@ -119,7 +120,7 @@ float cubeShadowValue(Shadow shadow, samplerCubeShadow map, vec3 p, vec3 N) {
 float shadowFadeAt(vec3 p) {
   float S = shadowData.fade[opaque(3)];
   if (S <= 0.0 || MUTANT == MUTANT_SHADOW_FADE_IGNORED) return 0.0;
-  return clamp((dot(p, shadowData.fade.xyz) - 0.8 * S) / (0.2 * S), 0.0, 1.0);
+  return clamp(quotient(dotProduct(p, shadowData.fade.xyz) - 0.8 * S, 0.2 * S), 0.0, 1.0);
 }
 
 // SPEC 3.9: shadowAtten = saturate(lerp(1, s, strength) + fade).

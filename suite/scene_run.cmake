@@ -16,14 +16,8 @@ message("lightcts run exited ${status}:\n${log}")
 # A validation-layer message fails its test (the worker reports a Crash);
 # one that no draw threw (said at start-up or shutdown) is in the workers'
 # logs, and fails every test of the combination here.
-file(GLOB worker_logs ${OUT}/run/logs/*.log)
-foreach(worker_log ${worker_logs})
-  file(STRINGS ${worker_log} layer_lines REGEX "Validation (Error|Warning)|VUID-")
-  if(layer_lines)
-    string(REPLACE ";" "\n" layer_lines "${layer_lines}")
-    message(FATAL_ERROR "validation-layer messages in ${worker_log}:\n${layer_lines}")
-  endif()
-endforeach()
+include(${CMAKE_CURRENT_LIST_DIR}/worker_logs_check.cmake)
+fail_on_validation_messages(${OUT}/run/logs)
 execute_process(COMMAND ${PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_run_verdicts.py ${OUT}/run ${OUT}/verdicts
                 RESULT_VARIABLE split)
 if(NOT split EQUAL 0)

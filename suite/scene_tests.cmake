@@ -113,6 +113,8 @@ endforeach()
 # suite/run_tests.cmake; choosing its tests by name: suite/test_choice_tests.cmake. Selection checks (SPEC 5.4, written by hand):
 # suite/selection_tests.cmake.
 include(${CMAKE_CURRENT_LIST_DIR}/mutant_tests.cmake)
+# Admissible variants (SPEC 7): suite/admissible_tests.cmake.
+include(${CMAKE_CURRENT_LIST_DIR}/admissible_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/run_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/parallel_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/test_choice_tests.cmake)

@@ -36,14 +36,14 @@ DeferredPrograms::Linked DeferredPrograms::build(const shaders::ConstantValues& 
 }
 
 GlName DeferredPrograms::buildGbuffer(const shaders::ConstantValues& constants) const {
-  GlName program = linkProgram(gl_, shaders::forwardVertexGlsl330(), shaders::gbufferFragmentGlsl330(), constants,
+  GlName program = linkProgram(gl_, shaders::Stage::ForwardVertex, shaders::Stage::GbufferFragment, constants,
                                "the deferred G-buffer program");
   bindSceneObjectInterface(gl_, program.get());  // as the forward program
   return program;
 }
 
 GlName DeferredPrograms::buildLight(const shaders::ConstantValues& constants) const {
-  GlName program = linkProgram(gl_, shaders::deferredLightVertexGlsl330(), shaders::deferredLightFragmentGlsl330(),
+  GlName program = linkProgram(gl_, shaders::Stage::DeferredLightVertex, shaders::Stage::DeferredLightFragment,
                                constants, "the deferred light program");
   bindUniformBlock(gl_, program.get(), shaders::binding::kFrameBlock);
   bindUniformBlock(gl_, program.get(), shaders::binding::kDeferredLightBlock);
@@ -56,8 +56,8 @@ GlName DeferredPrograms::buildLight(const shaders::ConstantValues& constants) co
 }
 
 GlName DeferredPrograms::buildComposite(const shaders::ConstantValues& constants) const {
-  GlName program = linkProgram(gl_, shaders::deferredCompositeVertexGlsl330(),
-                               shaders::deferredCompositeFragmentGlsl330(), constants,
+  GlName program = linkProgram(gl_, shaders::Stage::DeferredCompositeVertex,
+                               shaders::Stage::DeferredCompositeFragment, constants,
                                "the deferred composite program");
   bindUniformBlock(gl_, program.get(), shaders::binding::kDeferredFrameBlock);
   gl_.glUseProgram(program.get());

@@ -26,7 +26,7 @@ void bindSceneObjectInterface(const GlFunctions& gl, GLuint program) {
 }
 
 GlName ForwardPrograms::build(const shaders::ConstantValues& constants) const {
-  GlName program = linkProgram(gl_, shaders::forwardVertexGlsl330(), shaders::forwardFragmentGlsl330(), constants,
+  GlName program = linkProgram(gl_, shaders::Stage::ForwardVertex, shaders::Stage::ForwardFragment, constants,
                                "the forward program");
   bindSceneObjectInterface(gl_, program.get());
   bindClusterListsInterface(gl_, program.get());  // forward only: the G-buffer pass has no clusters

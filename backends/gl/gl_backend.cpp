@@ -59,8 +59,9 @@ class GlBackend final : public Backend {
     programs_.emplace(gl_);
     bakedTextures_.emplace(gl_);
     cookieTextures_.emplace(gl_);
-    shadowMaps_.emplace(gl_, options.variant.mutant);
-    sceneDraws_.emplace(gl_);
+    shadowMaps_.emplace(gl_, options.variant.mutant, info_.subPixelPrecisionBits);
+    // OpenGL's window y runs with NDC y; it has no sub-texel query (DeviceInfo).
+    sceneDraws_.emplace(gl_, lighting::DeviceGrid{info_.subPixelPrecisionBits, info_.subTexelPrecisionBits, 1.0f});
     clusterLists_.emplace(gl_);
     deferred_.emplace(gl_, options.variant);
     // GL 3.3 core has timer queries (ARB_timer_query), but a driver may give
@@ -88,7 +89,7 @@ class GlBackend final : public Backend {
     context_->makeCurrent();
     const shaders::ConstantValues constants = shaders::constantValues(frame.features, options_.variant);
     if (deferred(frame))
-      deferred_->programs(lighting::lightVolumes(frame), constants);
+      deferred_->programs(shaders::lightVolumesInBlendOrder(frame, options_.variant), constants);
     else
       programs_->program(constants);
     if (frame.shadows.any()) shadowMaps_->prepareProgram(constants);
@@ -112,7 +113,7 @@ class GlBackend final : public Backend {
     const GLuint forwardProgram = isDeferred ? 0 : programs_->program(constants);
     // The light pass's volumes, each with the slots its program looks up.
     const std::vector<lighting::LightVolume> volumes =
-        isDeferred ? lighting::lightVolumes(frame) : std::vector<lighting::LightVolume>{};
+        isDeferred ? shaders::lightVolumesInBlendOrder(frame, options_.variant) : std::vector<lighting::LightVolume>{};
     const DeferredProgramSet deferredPrograms = isDeferred ? deferred_->programs(volumes, constants) : DeferredProgramSet{};
     ensureTarget(frame.scene().image.width, frame.scene().image.height);
     sceneDraws_->update(frame);

@@ -47,10 +47,13 @@ GlName compile(const GlFunctions& gl, GLenum stage, const std::string& source, c
 
 }  // namespace
 
-GlName linkProgram(const GlFunctions& gl, std::string_view vertexSource, std::string_view fragmentSource,
+GlName linkProgram(const GlFunctions& gl, shaders::Stage vertexStage, shaders::Stage fragmentStage,
                    const shaders::ConstantValues& constants, const std::string& what) {
-  const GlName vertex = compile(gl, GL_VERTEX_SHADER, specialise(vertexSource, constants), what + "'s vertex");
-  const GlName fragment = compile(gl, GL_FRAGMENT_SHADER, specialise(fragmentSource, constants), what + "'s fragment");
+  const shaders::ShaderBuild build = shaders::shaderBuildOf(constants);
+  const GlName vertex =
+      compile(gl, GL_VERTEX_SHADER, specialise(shaders::glsl330(vertexStage, build), constants), what + "'s vertex");
+  const GlName fragment = compile(gl, GL_FRAGMENT_SHADER, specialise(shaders::glsl330(fragmentStage, build), constants),
+                                  what + "'s fragment");
   GlName program(gl.glCreateProgram(), [&gl](GLuint n) { gl.glDeleteProgram(n); });
   gl.glAttachShader(program.get(), vertex.get());
   gl.glAttachShader(program.get(), fragment.get());

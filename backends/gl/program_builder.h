@@ -14,9 +14,10 @@
 
 namespace backends::gl {
 
-// The program of two stages with `constants` defined; throws DriverError with
+// The program of two stages, in the build `constants` ask for
+// (shaders::shaderBuildOf), with `constants` defined; throws DriverError with
 // the compiler's or linker's log, naming `what` ("the forward program").
-GlName linkProgram(const GlFunctions& gl, std::string_view vertexSource, std::string_view fragmentSource,
+GlName linkProgram(const GlFunctions& gl, shaders::Stage vertexStage, shaders::Stage fragmentStage,
                    const shaders::ConstantValues& constants, const std::string& what);
 
 // Binds the uniform block to its binding point (shaders/shader_interface.def);

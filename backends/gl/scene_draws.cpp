@@ -72,7 +72,7 @@ void SceneDraws::writeUniforms(const lighting::Frame& frame) {
     objectUniforms_ = makeBuffer(gl_);
     objectStride_ = uniformBlockStride(gl_, sizeof(lighting::GpuObjectBlock));
   }
-  const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame);
+  const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame, grid_);
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.get());
   gl_.glBufferData(GL_UNIFORM_BUFFER, sizeof(block), &block, GL_DYNAMIC_DRAW);
   std::vector<unsigned char> objects(std::max<std::size_t>(objects_.size(), 1) * objectStride_);

@@ -9,6 +9,7 @@
 #include "backends/gl/gl_objects.h"
 #include "backends/packed_geometry.h"
 #include "lighting/frame.h"
+#include "lighting/gpu_packing.h"
 
 #include <memory>
 #include <vector>
@@ -17,7 +18,8 @@ namespace backends::gl {
 
 class SceneDraws {
  public:
-  explicit SceneDraws(const GlFunctions& gl) : gl_(gl) {}
+  // `grid`: the device's bits, for the admissible variants (lighting::DeviceGrid).
+  SceneDraws(const GlFunctions& gl, const lighting::DeviceGrid& grid) : gl_(gl), grid_(grid) {}
 
   // Uploads the geometry when the scene changed, and the frame's uniforms.
   void update(const lighting::Frame& frame);
@@ -35,6 +37,7 @@ class SceneDraws {
   void draw(const BakedTextures* baked) const;  // binds `baked`'s maps per object unless null
 
   const GlFunctions& gl_;
+  lighting::DeviceGrid grid_;
   GlName vertexArray_, vertices_, indices_;
   GlName frameUniforms_, objectUniforms_;
   std::size_t objectStride_ = 0;

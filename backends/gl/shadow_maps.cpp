@@ -29,8 +29,8 @@ void bindShadowInterface(const GlFunctions& gl, GLuint program) {
   bindSamplers(gl, program, shaders::binding::kShadowCube);
 }
 
-ShadowMaps::ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant)
-    : gl_(gl), compareFunc_(GLint(toGl(shaders::shadowLookupCompare(mutant)))) {
+ShadowMaps::ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant, int subPixelBits)
+    : gl_(gl), compareFunc_(GLint(toGl(shaders::shadowLookupCompare(mutant)))), subPixelBits_(subPixelBits) {
   // GL 3.3 promises 48 combined units; shaders/shader_interface.def's are fewer.
   GLint units = 0;
   gl_.glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
@@ -83,7 +83,7 @@ void ShadowMaps::render(const lighting::Frame& frame, const shaders::ConstantVal
   const GLuint program = casterProgram(constants);
   std::vector<unsigned char> blocks(views_.size() * passStride_);
   for (std::size_t v = 0; v < views_.size(); ++v) {
-    const lighting::GpuShadowPassBlock block{views_[v].clipFromCameraRelative};
+    const lighting::GpuShadowPassBlock block = lighting::packShadowPassBlock(views_[v], subPixelBits_);
     std::memcpy(&blocks[v * passStride_], &block, kPassBlockSize);
   }
   gl_.glBindBuffer(GL_UNIFORM_BUFFER, passBlocks_.get());
@@ -176,7 +176,7 @@ std::vector<imaging::Image> ShadowMaps::read() {
 GLuint ShadowMaps::casterProgram(const shaders::ConstantValues& constants) {
   auto found = casters_.find(constants);
   if (found == casters_.end()) {
-    GlName program = linkProgram(gl_, shaders::shadowCasterVertexGlsl330(), shaders::shadowCasterFragmentGlsl330(),
+    GlName program = linkProgram(gl_, shaders::Stage::ShadowCasterVertex, shaders::Stage::ShadowCasterFragment,
                                  constants, "the shadow-caster program");
     bindUniformBlock(gl_, program.get(), shaders::binding::kShadowPassBlock);
     bindUniformBlock(gl_, program.get(), shaders::binding::kObjectBlock);

@@ -39,7 +39,8 @@ class ShadowMaps {
  public:
   // Throws NotSupportedError when the context has too few texture units for
   // those of shaders/shader_interface.def. Needs the backend's context current.
-  ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant);
+  // `subPixelBits`: the device's GL_SUBPIXEL_BITS, for the snapping admissible variants.
+  ShadowMaps(const GlFunctions& gl, shaders::Mutant mutant, int subPixelBits);
 
   // Links the shadow-caster program for `constants` unless it is linked
   // (preparePipeline, and render on demand).
@@ -79,6 +80,7 @@ class ShadowMaps {
 
   const GlFunctions& gl_;
   const GLint compareFunc_;  // SPEC 3.9, the model's (shaders::shadowLookupCompare)
+  const int subPixelBits_;   // GL_SUBPIXEL_BITS, for the snapping admissible variants
   GLint maxSize_ = 0, maxCubeSize_ = 0;
   GlName block_, passBlocks_, framebuffer_, timer_;
   std::size_t passStride_ = 0;

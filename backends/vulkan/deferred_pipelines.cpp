@@ -17,10 +17,10 @@ DeferredPipelines::DeferredPipelines(const VulkanDevice& device, const PipelineC
                                      const vk::raii::DescriptorSetLayout& mapsSetLayout,
                                      const vk::raii::DescriptorSetLayout& lightTextureSetLayout)
     : builder_(device, cache),
-      gbufferStages_(device.device, shaders::forwardVertexSpirv(), shaders::gbufferFragmentSpirv()),
-      lightStages_(device.device, shaders::deferredLightVertexSpirv(), shaders::deferredLightFragmentSpirv()),
-      compositeStages_(device.device, shaders::deferredCompositeVertexSpirv(),
-                       shaders::deferredCompositeFragmentSpirv()) {
+      gbufferStages_(device.device, shaders::Stage::ForwardVertex, shaders::Stage::GbufferFragment),
+      lightStages_(device.device, shaders::Stage::DeferredLightVertex, shaders::Stage::DeferredLightFragment),
+      compositeStages_(device.device, shaders::Stage::DeferredCompositeVertex,
+                       shaders::Stage::DeferredCompositeFragment) {
   // Set 0: the scene's uniforms as forward has them, the light block of each
   // light draw and the deferred frame block. Set 2: the G-buffer and the
   // light buffer.

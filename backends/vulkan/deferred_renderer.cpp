@@ -17,7 +17,7 @@ DeferredRenderer::DeferredRenderer(const VulkanDevice& device, const PipelineCac
     : device_(device), variant_(variant), pipelines_(device, cache, mapsSetLayout, lightTextureSetLayout) {}
 
 void DeferredRenderer::preparePipelines(const lighting::Frame& frame) {
-  choosePipelines(frame, lighting::lightVolumes(frame));
+  choosePipelines(frame, shaders::lightVolumesInBlendOrder(frame, variant_));
 }
 
 void DeferredRenderer::choosePipelines(const lighting::Frame& frame,
@@ -36,7 +36,7 @@ void DeferredRenderer::choosePipelines(const lighting::Frame& frame,
 }
 
 void DeferredRenderer::prepareFrame(const lighting::Frame& frame) {
-  const std::vector<lighting::LightVolume> volumes = lighting::lightVolumes(frame);
+  const std::vector<lighting::LightVolume> volumes = shaders::lightVolumesInBlendOrder(frame, variant_);
   choosePipelines(frame, volumes);
   buffer_ = frame.scene().pipeline.deferredBuffer;
   const vk::Extent2D extent{std::uint32_t(frame.scene().image.width), std::uint32_t(frame.scene().image.height)};

@@ -12,7 +12,7 @@ namespace backends::vulkan {
 
 ForwardPipelines::ForwardPipelines(const VulkanDevice& device, const PipelineCacheFile& cache)
     : builder_(device, cache),
-      stages_(device.device, shaders::forwardVertexSpirv(), shaders::forwardFragmentSpirv()) {
+      stages_(device.device, shaders::Stage::ForwardVertex, shaders::Stage::ForwardFragment) {
   const std::array<vk::DescriptorSetLayoutBinding, 2> bindings = SceneUniforms::layoutBindings();
   setLayout_ = vk::raii::DescriptorSetLayout(
       device.device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = bindings.size(), .pBindings = bindings.data()});

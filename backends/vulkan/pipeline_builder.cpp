@@ -32,18 +32,25 @@ vk::raii::ShaderModule shaderModule(const vk::raii::Device& device, std::span<co
 
 }  // namespace
 
-ShaderStages::ShaderStages(const vk::raii::Device& device, std::span<const std::uint32_t> vertexSpirv,
-                           std::span<const std::uint32_t> fragmentSpirv)
-    : vertex(shaderModule(device, vertexSpirv)), fragment(shaderModule(device, fragmentSpirv)) {}
+ShaderStages::ShaderStages(const vk::raii::Device& device, shaders::Stage vertexStage, shaders::Stage fragmentStage)
+    : vertex(shaderModule(device, shaders::spirv(vertexStage, shaders::ShaderBuild::Model))),
+      fragment(shaderModule(device, shaders::spirv(fragmentStage, shaders::ShaderBuild::Model))),
+      variantsVertex(shaderModule(device, shaders::spirv(vertexStage, shaders::ShaderBuild::AdmissibleVariants))),
+      variantsFragment(shaderModule(device, shaders::spirv(fragmentStage, shaders::ShaderBuild::AdmissibleVariants))) {}
 
 vk::raii::Pipeline PipelineBuilder::build(const vk::raii::PipelineLayout& layout, const ShaderStages& shaderStages,
                                           const shaders::ConstantValues& constants,
                                           const PassPipelineState& pass) const {
   const Specialization specialization(constants);
+  const bool variants = shaders::shaderBuildOf(constants) == shaders::ShaderBuild::AdmissibleVariants;
   const std::array<vk::PipelineShaderStageCreateInfo, 2> stages{{
-      {.stage = vk::ShaderStageFlagBits::eVertex, .module = *shaderStages.vertex, .pName = "main",
+      {.stage = vk::ShaderStageFlagBits::eVertex,
+       .module = variants ? *shaderStages.variantsVertex : *shaderStages.vertex,
+       .pName = "main",
        .pSpecializationInfo = &specialization.info},
-      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *shaderStages.fragment, .pName = "main",
+      {.stage = vk::ShaderStageFlagBits::eFragment,
+       .module = variants ? *shaderStages.variantsFragment : *shaderStages.fragment,
+       .pName = "main",
        .pSpecializationInfo = &specialization.info},
   }};
   const vk::PipelineInputAssemblyStateCreateInfo inputAssembly{.topology = vk::PrimitiveTopology::eTriangleList};

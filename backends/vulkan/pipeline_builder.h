@@ -7,6 +7,7 @@
 // the model's (lighting/raster_state.h), translated by raster_translation.h.
 #pragma once
 
+#include "shaders/embedded_spirv.h"
 #include "backends/vulkan/pipeline_cache_file.h"
 #include "backends/vulkan/vulkan_device.h"
 #include "lighting/raster_state.h"
@@ -19,12 +20,13 @@
 namespace backends::vulkan {
 
 // A pass's vertex and fragment shader modules, from embedded SPIR-V.
+// A vertex and a fragment stage, each in both builds (shaders/embedded_spirv.h):
+// a pipeline takes the build its constants ask for (shaders::shaderBuildOf).
 struct ShaderStages {
-  ShaderStages(const vk::raii::Device& device, std::span<const std::uint32_t> vertexSpirv,
-               std::span<const std::uint32_t> fragmentSpirv);
+  ShaderStages(const vk::raii::Device& device, shaders::Stage vertexStage, shaders::Stage fragmentStage);
 
-  vk::raii::ShaderModule vertex;
-  vk::raii::ShaderModule fragment;
+  vk::raii::ShaderModule vertex, fragment;                    // the model's build
+  vk::raii::ShaderModule variantsVertex, variantsFragment;    // the admissible variants' build
 };
 
 struct PassPipelineState {

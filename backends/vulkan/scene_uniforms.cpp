@@ -18,7 +18,8 @@ std::array<vk::DescriptorSetLayoutBinding, 2> SceneUniforms::layoutBindings() {
 }
 
 SceneUniforms::SceneUniforms(const VulkanDevice& device, std::size_t objectCapacity)
-    : objectCapacity_(std::max<std::size_t>(objectCapacity, 1)),
+    : grid_{device.info.subPixelPrecisionBits, device.info.subTexelPrecisionBits, -1.0f},
+      objectCapacity_(std::max<std::size_t>(objectCapacity, 1)),
       objectStride_(alignedStride(sizeof(lighting::GpuObjectBlock), device.limits.minUniformBufferOffsetAlignment)),
       frame_(device, sizeof(lighting::GpuFrameBlock), vk::BufferUsageFlagBits::eUniformBuffer),
       objects_(device, objectStride_ * objectCapacity_, vk::BufferUsageFlagBits::eUniformBuffer),
@@ -26,7 +27,7 @@ SceneUniforms::SceneUniforms(const VulkanDevice& device, std::size_t objectCapac
       objectInfo_{*objects_.buffer, 0, sizeof(lighting::GpuObjectBlock)} {}
 
 void SceneUniforms::write(const lighting::Frame& frame) {
-  const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame);
+  const lighting::GpuFrameBlock block = lighting::packFrameBlock(frame, grid_);
   frame_.write(std::span(&block, 1));
   for (std::size_t o = 0; o < frame.scene().objects.size(); ++o) {
     const lighting::GpuObjectBlock object = lighting::packObjectBlock(frame, int(o));

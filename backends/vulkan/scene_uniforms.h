@@ -34,6 +34,7 @@ class SceneUniforms {
   std::array<vk::WriteDescriptorSet, 2> descriptorWrites(vk::DescriptorSet set) const;
 
  private:
+  lighting::DeviceGrid grid_;  // the device's bits; framebuffer y runs against NDC y (the flipped viewport)
   std::size_t objectCapacity_;
   vk::DeviceSize objectStride_;
   HostBuffer frame_;

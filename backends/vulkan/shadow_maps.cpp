@@ -65,7 +65,7 @@ ShadowMaps::ShadowMaps(const VulkanDevice& device, const PipelineCacheFile& cach
     : device_(device),
       block_(device, sizeof(lighting::GpuShadowBlock), vk::BufferUsageFlagBits::eUniformBuffer),
       set_(set),
-      stages_(device.device, shaders::shadowCasterVertexSpirv(), shaders::shadowCasterFragmentSpirv()),
+      stages_(device.device, shaders::Stage::ShadowCasterVertex, shaders::Stage::ShadowCasterFragment),
       viewStride_(alignedStride(sizeof(lighting::GpuShadowPassBlock), device.limits.minUniformBufferOffsetAlignment)),
       viewBlocks_(device, viewStride_ * kMostViews, vk::BufferUsageFlagBits::eUniformBuffer) {
   // SPEC 3.9's compare, decided beside the raster state (lighting/raster_state.h).
@@ -154,7 +154,8 @@ void ShadowMaps::update(const lighting::Frame& frame) {
   }
   views_ = lighting::shadowPassViews(frame);
   for (std::size_t v = 0; v < views_.size(); ++v) {
-    const lighting::GpuShadowPassBlock block{views_[v].clipFromCameraRelative};
+    const lighting::GpuShadowPassBlock block =
+        lighting::packShadowPassBlock(views_[v], device_.info.subPixelPrecisionBits);
     viewBlocks_.write(std::span(&block, 1), v * viewStride_);
   }
   const std::size_t objectCount = frame.scene().objects.size();

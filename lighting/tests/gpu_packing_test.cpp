@@ -32,7 +32,9 @@ TEST(GpuPacking, Std140OffsetsOfTheFrameBlock) {
   EXPECT_EQ(offsetof(GpuFrameBlock, clusterForward), 96u + 68 * 64 + 64);
   EXPECT_EQ(offsetof(GpuFrameBlock, clusterSlicing), 96u + 68 * 64 + 80);
   EXPECT_EQ(offsetof(GpuFrameBlock, opaqueZero), 96u + 68 * 64 + 96);
-  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 112);
+  EXPECT_EQ(offsetof(GpuFrameBlock, rasterGrid), 96u + 68 * 64 + 112);
+  EXPECT_EQ(offsetof(GpuFrameBlock, filterGrid), 96u + 68 * 64 + 128);
+  EXPECT_EQ(sizeof(GpuFrameBlock), 96u + 68 * 64 + 144);
 }
 
 // Three clusters listing {0, 2}, {}, {1}: headers at texels 0-2, the lists
@@ -55,7 +57,8 @@ TEST(GpuPacking, Std140OffsetsOfTheObjectBlock) {
   EXPECT_EQ(offsetof(GpuObjectBlock, lightIndices), 160u);
   EXPECT_EQ(offsetof(GpuObjectBlock, lightmapTransform), 192u);
   EXPECT_EQ(offsetof(GpuObjectBlock, material), 208u);
-  EXPECT_EQ(sizeof(GpuObjectBlock), 224u);
+  EXPECT_EQ(offsetof(GpuObjectBlock, raster), 224u);
+  EXPECT_EQ(sizeof(GpuObjectBlock), 240u);
 }
 
 Scene farScene() {

@@ -47,7 +47,9 @@ TEST(LightEvaluation, PointLightStraightAbove) {
 TEST(LightEvaluation, AFadeWeightScalesTheValueAndTheBound) {
   // The fade weight (lighting/light_fade.h) scales finalColor; the float32
   // data holds float(finalColor * weight), one rounding like finalColor alone,
-  // so value and bound both scale by the weight, and weight 0 gives exactly 0.
+  // so value and bound both scale by the weight (these colours are powers of
+  // two), and weight 0 gives exactly 0 with no bound but the flush floor of
+  // its operations.
   const Scene s = oneLight(point({0, 1, 0}, 2, {1, 0.5, 0.25}, 2));
   const PositionContext where{{0, 10, 0}, 10};
   LightSum plain, quarter, zero;
@@ -60,7 +62,7 @@ TEST(LightEvaluation, AFadeWeightScalesTheValueAndTheBound) {
     EXPECT_DOUBLE_EQ(quarter.errorBound[c], 0.25 * plain.errorBound[c]);
   }
   EXPECT_EQ(zero.value, Vec3(0.0));
-  EXPECT_EQ(zero.errorBound, Vec3(0.0));
+  for (int c = 0; c < 3; ++c) EXPECT_LT(zero.errorBound[c], 1e-36);
 }
 
 TEST(LightEvaluation, PointLightAtFortyFiveDegrees) {
@@ -109,11 +111,27 @@ TEST(LightEvaluation, DirectionalIsNDotLTimesColour) {
   EXPECT_EQ(evaluate(s, {5, 0, 5}, {0, -1, 0}).value.g, 0.0);  // facing away: saturate clamps
 }
 
-TEST(LightEvaluation, ErrorBoundIsSmallRelativeWhereTheLightIsBenign) {
+// A light 1 m straight above, range 4: term = rangeAtt / d^2 with d^2 = 1.
+// With exact inputs the bound is the operations' own: a few dozen ULPs. A
+// position error e per component of p moves d^2 by up to 2 e (the vertical
+// component) to first order, and the term, whose slope in d^2 is
+// -(1 + 4 g q^2 / ...) about -1.03 relative here, by at least 2 e relative.
+TEST(LightEvaluation, ErrorBoundIsTheOperationsAndThePositionsError) {
   const Scene s = oneLight(point({0, 1, 0}, 4));
-  const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
-  EXPECT_GT(sum.errorBound.r, 0.0);
-  EXPECT_LT(sum.errorBound.r, 1e-4 * sum.value.r);
+  LightEvaluator e(s, s.pipeline.profile);
+  const SurfaceErrors exactInputs{0.0, 0.0};
+  PositionContext where{{0, 10, 0}, 10};
+  where.inputs = &exactInputs;
+  LightSum exact;
+  e.accumulate({0}, {0, 0, 0}, {0, 1, 0}, where, exact);
+  EXPECT_GT(exact.errorBound.r, 0.0);
+  EXPECT_LT(exact.errorBound.r, 100 * 0x1p-24 * exact.value.r);
+  const SurfaceErrors positionOff{1e-4, 0.0};
+  where.inputs = &positionOff;
+  LightSum moved;
+  e.accumulate({0}, {0, 0, 0}, {0, 1, 0}, where, moved);
+  EXPECT_GT(moved.errorBound.r, 2e-4 * moved.value.r);
+  EXPECT_LT(moved.errorBound.r, 3 * 2e-4 * moved.value.r);
 }
 
 TEST(LightEvaluation, ErrorBoundGrowsForALightInTheSurface) {

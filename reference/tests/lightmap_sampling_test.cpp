@@ -68,7 +68,7 @@ TEST(LightmapSampling, FilteringBoundByHand) {
   //   weights: 2 x 2^-4 x 0.5 = 0.0625
   //   UV:      2 x 8 x 0.5 x 16 u = 128 u
   //   blend:   6 u x 1
-  const double u = tolerance::kUnitRoundoff;
+  const double u = tolerance::kStepRoundoff;  // one GPU operation's rounding
   EXPECT_DOUBLE_EQ(filteringErrorBound(0.5, 1.0, 8), 0.0625 + 128 * u + 6 * u);
   // A flat neighbourhood leaves only the blend's rounding.
   EXPECT_DOUBLE_EQ(filteringErrorBound(0.0, 2.0, 8), 12 * u);
@@ -85,7 +85,7 @@ TEST(LightmapSampling, FilteringBoundOfASampleUsesEachChannelsSpread) {
   const BilinearSample s = sampleBilinear(map, {0.5, 0.5});
   EXPECT_DOUBLE_EQ(s.value[0], 0.5);
   const Vec4 bound = filteringErrorBound(s, 2);
-  const double u = tolerance::kUnitRoundoff;
+  const double u = tolerance::kStepRoundoff;  // one GPU operation's rounding
   // Channel 0: spread 1, magnitude <= 0.5 + 1: 0.125 + 2*2*16 u + 6 u * 1.5.
   EXPECT_DOUBLE_EQ(bound[0], 0.125 + 64 * u + 9 * u);
   // Channel 1: spread 0, magnitude 0.5.

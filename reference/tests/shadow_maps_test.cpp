@@ -65,9 +65,11 @@ TEST(ShadowMaps, DirectionalMapStoresThePlaneAndTheBoxTop) {
   EXPECT_DOUBLE_EQ(b.map->texel(0, 10, 10).depth, 0.5);
   // Texel (32, 32): centre mu = mv = 32.5/64, x = -0.0625, z = 0.0625: the box top y = 2, depth (1 - 0.5)/2.
   EXPECT_DOUBLE_EQ(b.map->texel(0, 32, 32).depth, 0.25);
-  // Both far from any edge: a correct pass stores them to within the depth's error only.
-  EXPECT_LT(b.map->texel(0, 10, 10).hi - b.map->texel(0, 10, 10).lo, 1e-5);
-  EXPECT_LT(b.map->texel(0, 32, 32).hi - b.map->texel(0, 32, 32).lo, 1e-5);
+  // Both far from any edge: a correct pass stores them to within the depth's
+  // error only: 8 ULPs of the depth (about 1e-6) and the vertices' position
+  // error over the box's depth range each way, under 2e-5 in all.
+  EXPECT_LT(b.map->texel(0, 10, 10).hi - b.map->texel(0, 10, 10).lo, 2e-5);
+  EXPECT_LT(b.map->texel(0, 32, 32).hi - b.map->texel(0, 32, 32).lo, 2e-5);
 }
 
 TEST(ShadowMaps, DirectionalLookupIsShadowedUnderTheBoxAndLitBesideIt) {
@@ -103,7 +105,7 @@ TEST(ShadowMaps, TexelsAtTheBoxSilhouetteAdmitBothDepths) {
   // (0.0625 world units) from the side, far beyond the snapping.
   EXPECT_DOUBLE_EQ(b.map->texel(0, 35, 32).depth, 0.25);
   EXPECT_DOUBLE_EQ(b.map->texel(0, 36, 32).depth, 0.5);
-  EXPECT_LT(b.map->texel(0, 35, 32).hi - b.map->texel(0, 35, 32).lo, 1e-5);
+  EXPECT_LT(b.map->texel(0, 35, 32).hi - b.map->texel(0, 35, 32).lo, 2e-5);
   // A map whose texel centre lies on the side: extent 8 and resolution 16
   // put centre 8.5/16 at x = -8 (2 8.5/16 - 1) = -0.5 exactly, where the
   // box top (depth (1 - 2/8)/2 = 0.375) and the floor (0.5) meet.
@@ -126,6 +128,29 @@ TEST(ShadowMaps, BilinearWeighsTheFourComparesAndALookupOnTheSilhouetteSpansThem
   EXPECT_LE(edge.lo, 0.4375 + 1e-12);
   EXPECT_GE(edge.hi, 0.5625 - 1e-12);
   EXPECT_LT(edge.span(), 0.2);
+}
+
+TEST(ShadowMaps, AMoveOnlyTheComparesSeeWidensTheirDepthNotTheWeights) {
+  const Built b = build(R"({"type": "directional", "direction": [0, -1, 0], "shadows": true,
+    "shadow_map": {"resolution": 64, "filter": "bilinear", "depth_bias": 0.05, "extent": 4}})");
+  // On the floor, away from the box: p' = p + 0.05 L, depth 0.49375 against
+  // the floor's 0.5, a margin of 0.05 world units in y. A receiver that may
+  // move 0.01 further keeps every compare; one that may move 0.1 reaches
+  // the texels' depth, and each compare may go either way.
+  EXPECT_EQ(b.map->lookup({2.7, 0, 2.7}, kUp, {1e-6, 0.01}, 0x1p-4).span(), 0.0);
+  const ShadowLookup flips = b.map->lookup({2.7, 0, 2.7}, kUp, {1e-6, 0.1}, 0x1p-4);
+  EXPECT_EQ(flips.lo, 0.0);
+  EXPECT_EQ(flips.hi, 1.0);
+  // On the silhouette's texel edge the weights follow the position alone: a
+  // move of 0.01 the compares alone see (0.0025 in depth, far inside the
+  // margin) leaves the interval as it was, the same move of the position
+  // shifts the taps by 0.08 texel and widens it by that much each way.
+  const ShadowLookup still = b.map->lookup({-0.5, 0, 0.1}, kUp, {1e-6}, 0x1p-4);
+  const ShadowLookup depthOnly = b.map->lookup({-0.5, 0, 0.1}, kUp, {1e-6, 0.01}, 0x1p-4);
+  const ShadowLookup moved = b.map->lookup({-0.5, 0, 0.1}, kUp, {1e-6 + 0.01}, 0x1p-4);
+  EXPECT_DOUBLE_EQ(depthOnly.lo, still.lo);
+  EXPECT_DOUBLE_EQ(depthOnly.hi, still.hi);
+  EXPECT_GT(moved.span(), still.span() + 0.15);
 }
 
 TEST(ShadowMaps, TentOfAUniformRegionIsOneAndItsWeightsSumToOne) {

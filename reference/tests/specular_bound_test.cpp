@@ -64,13 +64,16 @@ TEST(SpecularBound, HoldsForFloatEvaluationsAroundThePeak) {
 TEST(SpecularBound, FollowsTheConditioningOfThePeak) {
   // At the peak of smoothness 0.9, d = 1.1e-4: the constant 1.00001 alone is
   // off by 1.4e-8 in float32, 1.2e-4 of d, 2.5e-4 of d2; the bound must be at
-  // least that relative, and the float evaluation must sit inside it.
+  // least that relative, and the float evaluation must sit inside it. At
+  // most 10 %: each operation's rounding counts a whole ULP (either
+  // neighbour; tolerance_model.h, kStepRoundoff), twice the 5 % of one
+  // rounding to nearest.
   const Vec3 up(0, 1, 0);
   const double u = 0x1p-24;
   const LobeInputErrors errors{{7 * u, 5 * u}, {2 * u, 2 * u}, {2 * u, 2 * u}};
   const SpecularBound s = specularWithBound(up, up, up, 0.9, errors);
   EXPECT_GT(s.errorBound / s.value, 2.4e-4);
-  EXPECT_LT(s.errorBound / s.value, 0.05);
+  EXPECT_LT(s.errorBound / s.value, 0.10);
   const double f = floatLobe(vec3(0, 1, 0), vec3(0, 1, 0), vec3(0, 1, 0), 0.9f);
   EXPECT_GT(std::abs(f - s.value), 1e-4 * s.value) << "float32 is off at the peak, as SPEC 3.8 says";
   EXPECT_LE(std::abs(f - s.value), s.errorBound);

@@ -86,6 +86,44 @@ TEST(ResultRules, CountsAreOfOneBackend) {
   EXPECT_EQ(countMutants(mutants, "gl-egl"), (MutantCounts{0, 1, 0}));
 }
 
+TestRecord variantTest(const std::string& variant, Verdict verdict, const std::string& backendName = "vulkan") {
+  TestRecord t = test(verdict, backendName);
+  t.admissible = variant;
+  t.name = "g.s@" + variant + "." + backendName;
+  return t;
+}
+
+// A variant's tests count apart from the model's; its status over them:
+// a Fail (or an UnexpectedPass) is unsound, a crash leaves it incomplete,
+// every test NotSupported is NotSupported, and expected failures are sound.
+TEST(ResultRules, AnAdmissibleVariantIsSoundUnlessOneOfItsTestsFails) {
+  const std::vector<TestRecord> tests = {
+      test(Verdict::Pass),
+      variantTest("snap-up", Verdict::Pass),
+      variantTest("snap-up", Verdict::ExpectedFail),
+      variantTest("quotient-up", Verdict::Pass),
+      variantTest("quotient-up", Verdict::Fail),
+      variantTest("quotient-up", Verdict::Crash),
+      variantTest("snap-down", Verdict::Crash),
+      variantTest("snap-down", Verdict::Pass),
+      variantTest("snap-up", Verdict::NotSupported, "gl-egl")};
+  EXPECT_EQ(countVerdicts(tests, "vulkan"), (std::map<Verdict, int>{{Verdict::Pass, 1}}));
+  EXPECT_EQ(countAdmissibleVerdicts(tests, "vulkan"),
+            (std::map<Verdict, int>{{Verdict::Pass, 3}, {Verdict::ExpectedFail, 1}, {Verdict::Fail, 1},
+                                    {Verdict::Crash, 2}}));
+  const std::vector<AdmissibleRecord> records = admissibleRecords(tests);
+  ASSERT_EQ(records.size(), 4u);
+  EXPECT_EQ(records[0].variant, "snap-up");
+  EXPECT_EQ(records[0].status, comparison::AdmissibleStatus::Sound);
+  EXPECT_EQ(records[0].tests, 2);
+  EXPECT_EQ(records[0].expected, (std::vector<std::string>{"g.s@snap-up.vulkan"}));
+  EXPECT_EQ(records[1].status, comparison::AdmissibleStatus::Unsound);
+  EXPECT_EQ(records[1].failed.size(), 2u);  // the Fail and the Crash
+  EXPECT_EQ(records[2].status, comparison::AdmissibleStatus::Incomplete);
+  EXPECT_EQ(records[3].backend, "gl-egl");
+  EXPECT_EQ(records[3].status, comparison::AdmissibleStatus::NotSupported);
+}
+
 RunRecord passingRun() {
   RunRecord run;
   run.tests = {test(Verdict::Pass), test(Verdict::ExpectedFail), test(Verdict::Flake)};

@@ -59,7 +59,7 @@ TEST(RunRecords, TheRunsKeysAreThoseOfTheResultsFormatInItsOrder) {
       "machine",      "scenes_dir",    "scenes_digest",     "selection",      "baseline_files", "mutants_run",
       "mutant_check", "mutants_not_checked", "evidence_limit", "evidence_url", "jobs",          "shard",
       "reference_cache", "timeout_s",  "flake_retries",     "flakes_fail",    "backends",       "tests",
-      "mutants",      "budgets",       "slowest"};
+      "mutants",      "admissible",    "budgets",       "slowest"};
   EXPECT_EQ(keys, documented);
 }
 

@@ -69,5 +69,25 @@ TEST(ExpectedFailures, BaselineTurnsVerdicts) {
   EXPECT_EQ(applyExpectation(Verdict::Fail, &timeout), Verdict::Fail);
 }
 
+// A driver's deviation stays under a legal implementation: a scene's line
+// covers its admissible variants' tests, where a pass is a pass (the variant
+// may step around the fault); a line of the variant's own test is exact.
+TEST(ExpectedFailures, AScenesLineCoversItsAdmissibleVariantsTests) {
+  ExpectedFailures failures;
+  failures.parse("a.b.vulkan,Fail # the driver's fault\na.c@quotient-up.vulkan,Fail # this variant's\n", "drv.txt");
+  const ExpectedFailure* inherited = failures.find("a.b@snap-up.vulkan");
+  ASSERT_NE(inherited, nullptr);
+  EXPECT_TRUE(inherited->inherited);
+  EXPECT_EQ(applyExpectation(Verdict::Fail, inherited), Verdict::ExpectedFail);
+  EXPECT_EQ(applyExpectation(Verdict::Pass, inherited), Verdict::Pass);
+  EXPECT_NE(inherited->reason.find("listed for a.b.vulkan"), std::string::npos);
+  EXPECT_EQ(failures.find("a.b@snap-up.gl-egl"), nullptr);  // another combination's test
+  const ExpectedFailure* own = failures.find("a.c@quotient-up.vulkan");
+  ASSERT_NE(own, nullptr);
+  EXPECT_FALSE(own->inherited);
+  EXPECT_EQ(applyExpectation(Verdict::Pass, own), Verdict::UnexpectedPass);
+  EXPECT_EQ(failures.find("a.c@quotient-down.vulkan"), nullptr);  // no line for a.c's model test
+}
+
 }  // namespace
 }  // namespace runner

@@ -117,6 +117,31 @@ TEST(RunPlan, SmallMutantsArePackedWholeIntoParts) {
   EXPECT_EQ(parts[3].tasks.back().mutant, mutantNumber(19));
 }
 
+// An admissible variant's tests go together, after the model's and in
+// parts of their own, each whole, as a mutant's do: a backend is built for
+// one shader variant.
+TEST(RunPlan, AnAdmissibleVariantsTestsKeepTogether) {
+  std::vector<RunUnit> units;
+  for (int s = 0; s < 3; ++s) {
+    const std::string test = "g.s" + std::to_string(s) + ".vulkan";
+    RunUnit u{0, test, {{test, "x.json"}}};
+    for (const shaders::Admissible variant : {shaders::Admissible::QuotientUp, shaders::Admissible::SnapDown})
+      u.tasks.push_back({admissibleTestName("g.s" + std::to_string(s), variant, "vulkan"), "x.json",
+                         shaders::Mutant::None, variant});
+    units.push_back(u);
+  }
+  const std::vector<WorkerPart> parts = workerParts(units, 1);
+  ASSERT_EQ(parts.size(), 2u);  // the model's 3, then both variants' 6 packed in one part
+  EXPECT_EQ(parts[0].tasks.size(), 3u);
+  ASSERT_EQ(parts[1].tasks.size(), 6u);
+  EXPECT_EQ(parts[1].tasks[0].test, "g.s0@quotient-up.vulkan");
+  EXPECT_EQ(parts[1].tasks[2].test, "g.s2@quotient-up.vulkan");
+  EXPECT_EQ(parts[1].tasks[3].test, "g.s0@snap-down.vulkan");
+  for (const WorkerTask& task : parts[1].tasks) EXPECT_FALSE(task.isModelTest() || task.isMutantTask());
+  EXPECT_EQ(caseOfTest("g.s0@snap-down.vulkan"), "g.s0");
+  EXPECT_EQ(caseOfTest("g.s0.vulkan"), "g.s0");
+}
+
 TEST(RunPlan, PartitionDigestNamesThePartition) {
   const std::vector<RunUnit> units = {unit(0, "a.x.vulkan", 1), unit(0, "a.y.vulkan", 1)};
   const std::string digest = partitionDigest(units, {0, 1}, 2);
