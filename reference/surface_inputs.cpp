@@ -30,12 +30,6 @@ FloatBound sumOfProducts(const FloatBound* a, const FloatBound* b, int n) {
   return sum;
 }
 
-// The same for a sum of terms (the blend's numerators and denominator).
-FloatBound sumOf(const FloatBound* terms, int n) {
-  const FloatBound ones[3] = {FloatBound(1.0), FloatBound(1.0), FloatBound(1.0)};
-  return sumOfProducts(terms, ones, n);
-}
-
 Vec3Of<FloatBound> unitVector(const Vec3Of<FloatBound>& v) { return v * inverseSqrt(terms::dotProduct(v, v)); }
 
 const FloatBound& at(const Vec3Of<FloatBound>& v, int i) { return i == 0 ? v.x : i == 1 ? v.y : v.z; }

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""The docs checks can fail: each is run on a copy with one deliberately
+wrong line, and must exit 1 naming it.
+
+- check_doc_counts.py on a page that states one scene too many and six
+  combinations;
+- check_cli_documented.py on docs/cli.md with `--sharpness` renamed to
+  `--sharpnes` (an undocumented option and a documented one that does not
+  exist, both directions at once).
+
+    check_docs_catch_errors.py LIGHTCTS SOURCE_DIR
+
+Exit 0 when both checks fail as they must; 1 otherwise.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def expect_failure(what, command, must_say):
+    done = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    said = done.stdout + done.stderr
+    missing = [m for m in must_say if m not in said]
+    if done.returncode != 1 or missing:
+        print(f'FAIL: {what}: exit {done.returncode}, missing {missing} in:\n{said}')
+        return False
+    print(f'ok: {what}:\n{said.strip()}')
+    return True
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    lightcts, root = sys.argv[1:]
+    counts = subprocess.run([sys.executable, os.path.join(HERE, 'check_doc_counts.py'), root],
+                            capture_output=True, text=True).stdout
+    scenes = int(counts.split(' scenes,')[0].rsplit('(', 1)[1])
+    with tempfile.TemporaryDirectory() as tmp:
+        page = os.path.join(tmp, 'wrong.md')
+        with open(page, 'w', encoding='utf-8') as f:
+            f.write(f'{scenes + 1} scenes in all, so many tests on the six combinations.\n')
+        ok = expect_failure('a count one too many', [sys.executable, os.path.join(HERE, 'check_doc_counts.py'), root,
+                                                     page],
+                            [f'states {scenes + 1} suite scenes', 'states 6 backend combinations'])
+        cli = os.path.join(tmp, 'cli.md')
+        with open(os.path.join(root, 'docs', 'cli.md'), encoding='utf-8') as f:
+            text = f.read()
+        with open(cli, 'w', encoding='utf-8') as f:
+            f.write(text.replace('--sharpness', '--sharpnes'))
+        ok = expect_failure('an option renamed in docs/cli.md',
+                            [sys.executable, os.path.join(HERE, 'check_cli_documented.py'), lightcts, cli],
+                            ['`lightcts run --sharpness` is not in its section', 'docs/cli.md names --sharpnes']) and ok
+    return 0 if ok else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
