@@ -6,7 +6,9 @@ wrong line, and must exit 1 naming it.
   combinations;
 - check_cli_documented.py on docs/cli.md with `--sharpness` renamed to
   `--sharpnes` (an undocumented option and a documented one that does not
-  exist, both directions at once).
+  exist, both directions at once);
+- check_measured_figures.py on a page whose section says what a run took
+  without a date.
 
     check_docs_catch_errors.py LIGHTCTS SOURCE_DIR
 
@@ -54,6 +56,12 @@ def main():
         ok = expect_failure('an option renamed in docs/cli.md',
                             [sys.executable, os.path.join(HERE, 'check_cli_documented.py'), lightcts, cli],
                             ['`lightcts run --sharpness` is not in its section', 'docs/cli.md names --sharpnes']) and ok
+        undated = os.path.join(tmp, 'undated.md')
+        with open(undated, 'w', encoding='utf-8') as f:
+            f.write('## Cost\n\nThe whole run took 94 s on two cores.\n\n## Dated\n\nIt took 3 s (2026-12-06).\n')
+        ok = expect_failure('a measured time without a date',
+                            [sys.executable, os.path.join(HERE, 'check_measured_figures.py'), root, undated],
+                            ['"took 94 s" is a measured time in a section with no date (## Cost)']) and ok
     return 0 if ok else 1
 
 
