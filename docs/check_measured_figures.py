@@ -19,7 +19,7 @@ import sys
 
 # A time stated as what something took or costs; "default 120 s" and code
 # blocks are settings and examples, not measurements.
-MEASURED = re.compile(r'\b(?:took|takes|measured|ran in|costs?)\b[^.]*?(?<!default )\b\d+(?:\.\d+)? ?'
+MEASURED = re.compile(r'\b(?:took|takes|measured|ran in|costs?)\b[^.]*?(?<!default )\b\d+(?:\.\d+)?\s?'
                       r'(?:s|ms|minutes|seconds)\b', re.IGNORECASE)
 DATE = re.compile(r'\b20\d\d-\d\d-\d\d\b')
 
