@@ -24,6 +24,8 @@ import os
 import re
 import sys
 
+from doc_pages import pages, shown
+
 WORDS = {'one': 1, 'two': 2, 'three': 3, 'four': 4, 'five': 5, 'six': 6, 'seven': 7, 'eight': 8, 'nine': 9,
          'ten': 10, 'eleven': 11, 'twelve': 12}
 NUMBER = r'(?P<n>\d[\d,]*|' + '|'.join(WORDS) + ')'
@@ -102,13 +104,6 @@ def rules(t):
     return out
 
 
-def documents(root):
-    paths = [os.path.join(root, 'README.md')] + sorted(glob.glob(os.path.join(root, 'docs', '*.md')))
-    # The specification's numbers are the model's (4 directional lights, 64
-    # others), not counts of the tree.
-    return [p for p in paths if not p.endswith('specification.md')]
-
-
 def main():
     if len(sys.argv) < 2:
         print(__doc__, file=sys.stderr)
@@ -117,7 +112,7 @@ def main():
     t = tree_counts(root)
     checks = [(re.compile(p, re.IGNORECASE | re.MULTILINE), what, n) for p, what, n in rules(t)]
     problems, checked = [], 0
-    for path in sys.argv[2:] or documents(root):
+    for path in pages(root, sys.argv[2:]):
         with open(path, encoding='utf-8') as f:
             text = f.read()
         seen = set()
@@ -130,7 +125,7 @@ def main():
                 stated = number(m.group('n'))
                 if stated != expected:
                     line = text.count('\n', 0, m.start()) + 1
-                    problems.append(f'{os.path.relpath(path, root) if path.startswith(root) else path}:{line}: "{m.group(0).strip()}" states {stated} '
+                    problems.append(f'{shown(path, root)}:{line}: "{m.group(0).strip()}" states {stated} '
                                     f'{what}; the tree has {expected}')
     for p in problems:
         print('FAIL:', p)

@@ -12,10 +12,10 @@ section that has it.
 FILE ...: check these Markdown files instead of README.md and docs/.
 Exit 0 when every such section has a date; 1 otherwise, naming each.
 """
-import glob
-import os
 import re
 import sys
+
+from doc_pages import pages, shown
 
 # A time stated as what something took or costs; "default 120 s" and code
 # blocks are settings and examples, not measurements.
@@ -24,18 +24,13 @@ MEASURED = re.compile(r'\b(?:took|takes|measured|ran in|costs?)\b[^.]*?(?<!defau
 DATE = re.compile(r'\b20\d\d-\d\d-\d\d\b')
 
 
-def documents(root):
-    paths = [os.path.join(root, 'README.md')] + sorted(glob.glob(os.path.join(root, 'docs', '*.md')))
-    return [p for p in paths if not p.endswith('specification.md')]
-
-
 def main():
     if len(sys.argv) < 2:
         print(__doc__, file=sys.stderr)
         return 2
     root = sys.argv[1]
     problems, sections = [], 0
-    for path in sys.argv[2:] or documents(root):
+    for path in pages(root, sys.argv[2:]):
         with open(path, encoding='utf-8') as f:
             text = f.read()
         prose = re.sub(r'```.*?```', lambda m: '\n' * m.group(0).count('\n'), text, flags=re.DOTALL)
@@ -50,7 +45,7 @@ def main():
                 sections += 1
                 if not DATE.search(section):
                     line = text.count('\n', 0, offset + m.start()) + 1
-                    name = os.path.relpath(path, root) if path.startswith(root) else path
+                    name = shown(path, root)
                     problems.append(f'{name}:{line}: "{m.group(0)}" is a measured time in a section with no date '
                                     f'({section.split(chr(10), 1)[0][:60]})')
             offset += len(section) + 1
