@@ -7,12 +7,13 @@ wrong line, and must exit 1 naming it.
 - check_cli_documented.py on docs/cli.md with `--sharpness` renamed to
   `--sharpnes` (an undocumented option and a documented one that does not
   exist, both directions at once);
-- check_measured_figures.py on a page whose section says what a run took
-  without a date.
+- check_measured_figures.py on a page that types a run's time by hand, one
+  whose link to a record states another number, and a record measured on
+  a suite one scene smaller than the tree's.
 
     check_docs_catch_errors.py LIGHTCTS SOURCE_DIR
 
-Exit 0 when both checks fail as they must; 1 otherwise.
+Exit 0 when every check fails as it must; 1 otherwise.
 """
 import glob
 import os
@@ -56,12 +57,21 @@ def main():
         ok = expect_failure('an option renamed in docs/cli.md',
                             [sys.executable, os.path.join(HERE, 'check_cli_documented.py'), lightcts, cli],
                             ['`lightcts run --sharpness` is not in its section', 'docs/cli.md names --sharpnes']) and ok
-        undated = os.path.join(tmp, 'undated.md')
-        with open(undated, 'w', encoding='utf-8') as f:
-            f.write('## Cost\n\nThe whole run took 94 s on two cores.\n\n## Dated\n\nIt took 3 s (2026-12-06).\n')
-        ok = expect_failure('a measured time without a date',
-                            [sys.executable, os.path.join(HERE, 'check_measured_figures.py'), root, undated],
-                            ['"took 94 s" is a measured time in a section with no date (## Cost)']) and ok
+        records = os.path.join(tmp, 'measurements.md')
+        with open(records, 'w', encoding='utf-8') as f:
+            f.write('# Measured figures\n\n## whole-run\n\nThe whole run.\n\n| field | value |\n|---|---|\n'
+                    '| figure | 94 s |\n| date | 2026-12-06 |\n| commit | 0000000 |\n| machine | 2 cores |\n'
+                    f'| command | `time scripts/run.sh` |\n| suite | {scenes - 1} scenes, 7 combinations, 33 mutants |\n')
+        by_hand = os.path.join(tmp, 'by-hand.md')
+        with open(by_hand, 'w', encoding='utf-8') as f:
+            f.write('## Cost\n\nThe whole run took 94 s on two cores (2026-12-06), '
+                    'or [95 s](measurements.md#whole-run).\n')
+        ok = expect_failure('a time typed by hand, a wrong quote and a stale record',
+                            [sys.executable, os.path.join(HERE, 'check_measured_figures.py'), root,
+                             '--records', records, by_hand],
+                            ['"94 s" is a time stated by hand', '"95 s" states 95; the record whole-run says "94 s"',
+                             f'whole-run was measured with {scenes - 1} scenes, 7 combinations, 33 mutants; '
+                             f'the tree has {scenes} scenes']) and ok
     return 0 if ok else 1
 
 

@@ -1,0 +1,68 @@
+"""The records of docs/measurements.md: read and written by one module, so
+the page's writer (scripts/measure.py) and its check
+(check_measured_figures.py) agree on its form.
+
+A record is a `## id` heading, a line that says what was measured, and a
+two-column table of fields:
+
+    ## fresh-clone
+
+    `.ci/run` in a fresh clone, every cache empty.
+
+    | field | value |
+    |---|---|
+    | figure | 15.4 min in all; build 470 s; ctest 457 s |
+    | date | 2026-12-06 |
+    ...
+
+Prose elsewhere quotes a record through a link to its anchor,
+`[15.4 minutes](measurements.md#fresh-clone)`, and the check holds every
+number of the link's text to the record's figure.
+"""
+import re
+
+# The fields every record has, in the order they are written.
+FIELDS = ['figure', 'date', 'commit', 'machine', 'load', 'command', 'suite']
+REQUIRED = ['figure', 'date', 'commit', 'machine', 'command']
+HEADING = re.compile(r'^## ([a-z0-9][a-z0-9-]*)\s*$', re.MULTILINE)
+ROW = re.compile(r'^\| (\w+) \| (.*) \|\s*$')  # a value's own '|' is written '\|'
+
+
+def parse(text):
+    """{id: {'what': str, field: value, 'line': line number}}, in page order."""
+    records = {}
+    heads = list(HEADING.finditer(text))
+    for i, head in enumerate(heads):
+        end = heads[i + 1].start() if i + 1 < len(heads) else len(text)
+        body = text[head.end():end]
+        record = {'line': text.count('\n', 0, head.start()) + 1, 'what': ''}
+        for line in body.strip().split('\n'):
+            row = ROW.match(line)
+            if row and row.group(1) in FIELDS:
+                record[row.group(1)] = row.group(2).strip().replace('\\|', '|')
+            elif line and not line.startswith('|') and not record['what']:
+                record['what'] = line.strip()
+        records[head.group(1)] = record
+    return records
+
+
+def format_record(name, record):
+    lines = [f'## {name}', '', record['what'], '', '| field | value |', '|---|---|']
+    lines += [f'| {f} | {record[f].replace("|", chr(92) + "|")} |' for f in FIELDS if record.get(f)]
+    return '\n'.join(lines) + '\n'
+
+
+def replace_record(text, name, record):
+    """The page with the record `name` replaced, or added at the end."""
+    new = format_record(name, record)
+    heads = list(HEADING.finditer(text))
+    for i, head in enumerate(heads):
+        if head.group(1) == name:
+            end = heads[i + 1].start() if i + 1 < len(heads) else len(text)
+            return text[:head.start()] + new + ('\n' if i + 1 < len(heads) else '') + text[end:]
+    return text.rstrip('\n') + '\n\n' + new
+
+
+def numbers(text):
+    """The numbers a text states, as written without thousands commas."""
+    return [n.replace(',', '') for n in re.findall(r'\d[\d,]*(?:\.\d+)?', text)]
