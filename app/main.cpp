@@ -165,6 +165,11 @@ int main(int argc, char** argv) {
   // Parallel workers and shards (docs/ci.md): the cores of one machine, the machines of a CI job.
   runCmd->add_option("--jobs,-j", run.jobs, "Worker processes at once (default: one per core)")
       ->check(CLI::PositiveNumber);
+  runCmd->add_option("--tests-per-worker", run.testsPerWorker,
+                     "Tests a worker process runs before a fresh one takes over (fewer starts of the driver and its "
+                     "shader compiler against more parts to spread over --jobs)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   std::string shardText;
   runCmd->add_option("--shard", shardText, "Run shard I of N (I from 1): a disjoint part of the run, for CI jobs");
   runCmd->add_option("--timings", run.timingsFile, "An earlier results.json: balance the shards by its test times");
@@ -196,6 +201,9 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--out", bench.outDir, "Output folder: bench.json, index.html, <backend>.html");
   benchCmd->add_option("--scenes", bench.scenesDir, "Scene folder")->default_val("suite/scenes");
   benchCmd->add_flag("--quick", bench.quick, "Fewer points and repetitions (a smoke test, not a measurement)");
+  benchCmd->add_flag("--full-set", bench.fullSet,
+                     "The full set on every combination, also on a driver whose measured speed would give it the "
+                     "scaled-down set (a 1280x720 field frame over a second)");
   benchCmd->add_option("--timeout", bench.timeoutSeconds, "Seconds one benchmark process may take")->default_val(900);
   bool freshErrors = false;
   benchCmd->add_flag("--fresh-errors", freshErrors,

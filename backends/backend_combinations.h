@@ -19,9 +19,6 @@ struct BackendCombination {
   // one of the drivers the Vulkan backend knows (vulkan/vulkan_drivers.h).
   bool takesMesaDriver() const { return backend != "vulkan"; }
 
-  // softpipe renders about 150 times slower than llvmpipe: benchmarks and
-  // long tests scale down there.
-  bool isSlowDriver() const { return driver == "softpipe"; }
   // OSMesa reaches the same Mesa driver as EGL through another context
   // (client memory instead of a pbuffer), and zink draws OpenGL through
   // lavapipe: each a second path to a driver that another combination

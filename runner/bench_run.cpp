@@ -269,6 +269,9 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     err << "lightcts: bench: no physical limit without the peak rate\n";
   }
   common.insert(common.end(), quick.begin(), quick.end());
+  // Each frame process picks its set by its driver's measured speed
+  // (suite/bench/driver_speed.h) unless told otherwise.
+  if (options.fullSet) common.push_back("--set=full");
   // The ideal references (untimed) are the same for every combination's
   // scenes: the first process to need one renders it, the others read it.
   // Their files are keyed by name, not by the code that made them, so they

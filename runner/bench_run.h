@@ -19,6 +19,7 @@ struct BenchOptions {
   std::string outDir;
   std::string scenesDir = "suite/scenes";
   bool quick = false;                 // fewer points and repetitions (smoke tests)
+  bool fullSet = false;               // every combination the full set, however slow its driver
   double timeoutSeconds = 900;        // per benchmark process
   // The errors kept across runs (frame processes' --error_cache); "" for
   // none (`--fresh-errors`): this run's errors only, in raw/ideal.

@@ -177,7 +177,8 @@ class Execution {
 std::vector<CombinationRun> executeRun(const RunOptions& options, const RunInputs& inputs, const RunUnits& plan,
                                        const WorkerSetting& setting, std::ostream& out) {
   Execution execution(options, inputs, setting);
-  const std::vector<WorkerPart> parts = workerParts(plan.units, inputs.combinations.size());
+  const std::vector<WorkerPart> parts =
+      workerParts(plan.units, inputs.combinations.size(), std::size_t(options.testsPerWorker));
   std::vector<std::size_t> taskTotals(inputs.combinations.size(), 0);
   for (const WorkerPart& part : parts) taskTotals[part.combination] += part.tasks.size();
   const std::vector<std::string>& names = execution.names();

@@ -102,7 +102,8 @@ std::string partitionDigest(const std::vector<RunUnit>& units, const std::vector
   return baking::toHex(baking::sha256(text.data(), text.size()));
 }
 
-std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size_t combinations) {
+std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size_t combinations,
+                                    std::size_t perPart) {
   std::vector<WorkerPart> parts;
   for (std::size_t c = 0; c < combinations; ++c) {
     std::vector<WorkerTask> model;
@@ -122,19 +123,19 @@ std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size
       }
     }
     int number = 0;
-    for (std::size_t start = 0; start < model.size(); start += kModelTestsPerPart) {
-      const std::size_t end = std::min(model.size(), start + kModelTestsPerPart);
+    for (std::size_t start = 0; start < model.size(); start += perPart) {
+      const std::size_t end = std::min(model.size(), start + perPart);
       parts.push_back({c, number++, {model.begin() + std::ptrdiff_t(start), model.begin() + std::ptrdiff_t(end)}});
     }
     // Whole mutants and admissible variants, packed in order into parts of
-    // up to kModelTestsPerPart tasks: checked against its killers a mutant
+    // up to perPart tasks: checked against its killers a mutant
     // has a few tasks, and a worker per mutant would spend more on starting
     // its backend than on them. A variant's tasks, one per scene, fill parts
     // of their own.
     std::vector<WorkerTask> packed;
     for (const Shaders& variant : variantOrder) {
       std::vector<WorkerTask>& block = byVariant[variant];
-      if (!packed.empty() && packed.size() + block.size() > kModelTestsPerPart)
+      if (!packed.empty() && packed.size() + block.size() > perPart)
         parts.push_back({c, number++, std::exchange(packed, {})});
       packed.insert(packed.end(), block.begin(), block.end());
     }

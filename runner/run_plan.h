@@ -66,16 +66,21 @@ std::vector<int> assignShards(const std::vector<double>& costs, int total);
 std::string partitionDigest(const std::vector<RunUnit>& units, const std::vector<int>& shardOfUnit, int total);
 
 // A worker's share of one combination: the model's tests in runs of at most
-// kModelTestsPerPart (in catalogue order), then the mutants, each whole in
-// one part (so a mutant's evidence is that of its first kill), consecutive
-// mutants packed into parts of at most kModelTestsPerPart tasks (a mutant
-// with more tasks, checked against every scene, has a part of its own).
+// `perPart` (in catalogue order; kModelTestsPerPart unless `run
+// --tests-per-worker` says), then the mutants, each whole in one part (so a
+// mutant's evidence is that of its first kill), consecutive mutants packed
+// into parts of at most `perPart` tasks (a mutant with more tasks, checked
+// against every scene, has a part of its own). A part is one worker
+// process: fewer, longer parts start the driver and compile its pipelines
+// fewer times (SwiftShader compiles a pipeline's shaders at its first draw
+// in every process), more parts spread a combination over --jobs.
 inline constexpr std::size_t kModelTestsPerPart = 24;
 struct WorkerPart {
   std::size_t combination = 0;
   int number = 0;  // within the combination, from 0
   std::vector<WorkerTask> tasks;
 };
-std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size_t combinations);
+std::vector<WorkerPart> workerParts(const std::vector<RunUnit>& units, std::size_t combinations,
+                                    std::size_t perPart = kModelTestsPerPart);
 
 }  // namespace runner

@@ -55,6 +55,7 @@ struct RunOptions {
   int flakeRetries = 1;               // --flake-retries: re-runs of a failing, crashing or timed-out test
   bool flakesFail = false;            // --flakes-fail: a Flake fails the run
   int jobs = 0;                       // --jobs: worker processes at once; 0: one per core
+  int testsPerWorker = int(kModelTestsPerPart);  // --tests-per-worker: a worker part's tasks (workerParts)
   std::optional<ShardSpec> shard;     // --shard I/N; none: the whole run
   std::string timingsFile;            // --timings: a results.json to balance the shards by
   // The shared reference cache folder (conformance/reference_cache.h). With

@@ -1,11 +1,17 @@
 # One combination's admissible check (suite/admissible_tests.cmake): `lightcts
 # run` with every admissible variant the combination realises, each against
 # its witnesses (suite/admissible_witnesses.def), the expected-failures files
-# applied, one worker at a time. Passes when every variant is sound (exit 0);
+# applied, in one worker process (as scene_run.cmake says why). Passes when every variant is sound (exit 0);
 # prints NotSupported (a ctest skip) when the backend is absent (exit 3); any
 # other exit, or a validation-layer message in a worker's log, fails.
-#   cmake -DLIGHTCTS=exe -DSCENES=dir -DCOMBINATION=suffix -DOUT=dir [-DEXPECTED=file,...] -P admissible_run.cmake
+# The combination is named by its backend and driver, as in scene_run.cmake.
+#   cmake -DLIGHTCTS=exe -DSCENES=dir -DCOMBINATION=suffix -DBACKEND=b -DDRIVER=d -DOUT=dir [-DEXPECTED=file,...]
+#         -P admissible_run.cmake
 file(REMOVE_RECURSE ${OUT})
+set(driver_args)
+if(NOT DRIVER STREQUAL "default")
+  set(driver_args --driver ${DRIVER})
+endif()
 set(expected_args)
 if(DEFINED EXPECTED AND NOT EXPECTED STREQUAL "")
   string(REPLACE "," ";" expected_files "${EXPECTED}")
@@ -13,8 +19,9 @@ if(DEFINED EXPECTED AND NOT EXPECTED STREQUAL "")
     list(APPEND expected_args --expected-failures ${file})
   endforeach()
 endif()
-execute_process(COMMAND ${LIGHTCTS} run --backend ${COMBINATION} --scenes ${SCENES} --admissible all --admissible-only
-                        --admissible-witnesses --no-budgets --jobs 1 ${expected_args} --out ${OUT}
+execute_process(COMMAND ${LIGHTCTS} run --backend ${BACKEND} ${driver_args} --scenes ${SCENES} --admissible all --admissible-only
+                        --admissible-witnesses --no-budgets --jobs 1 --tests-per-worker 100000 ${expected_args}
+                        --out ${OUT}
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
 if(status EQUAL 3)
   message("NotSupported: ${COMBINATION} is not present here\n${output}")

@@ -16,8 +16,10 @@ foreach(combination ${backend_combinations})
   split_combination(${combination})
   add_test(NAME admissible.${suffix}
            COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DSCENES=${CMAKE_CURRENT_SOURCE_DIR}/scenes
-                   -DCOMBINATION=${suffix} -DOUT=${CMAKE_BINARY_DIR}/test-out/admissible/${suffix}
+                   -DCOMBINATION=${suffix} -DBACKEND=${backend} -DDRIVER=${driver} -DOUT=${CMAKE_BINARY_DIR}/test-out/admissible/${suffix}
                    -DEXPECTED=${admissible_expected} -P ${CMAKE_CURRENT_SOURCE_DIR}/admissible_run.cmake)
+  # COST: started first (CMakeLists.txt says why): SwiftShader's compiles each
+  # variant's pipelines, the longest test of the suite.
   set_tests_properties(admissible.${suffix} PROPERTIES LABELS "admissible;${suffix}"
-    SKIP_REGULAR_EXPRESSION "NotSupported" ENVIRONMENT "${backend_test_environment}")
+    SKIP_REGULAR_EXPRESSION "NotSupported" ENVIRONMENT "${backend_test_environment}" COST 40)
 endforeach()

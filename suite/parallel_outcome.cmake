@@ -9,9 +9,15 @@
 #                itself key for key (times aside); merging shards of different revisions,
 #                drivers or scene sets, with one missing or one twice exits 2
 #                and writes nothing.
-#   cmake -DLIGHTCTS=exe -DPYTHON=python3 -DCHECK=check_same_results.py -DOUT=dir -DMODE=jobs|shards
+#   MODE=selection-shards: the same tests as one run and as 3 shards merged
+#                are the same test for test, and nothing more: the
+#                balancing, the shard of one and the refusals are the
+#                partition's and the merge's, which MODE=shards checks on
+#                its own run.
+#   cmake -DLIGHTCTS=exe -DPYTHON=python3 -DCHECK=check_same_results.py -DOUT=dir -DMODE=jobs|shards|selection-shards
 #         "-DARGS=run arguments" ["-DENV=K=V;..."] -P parallel_outcome.cmake
 # A skip (exit 3: no backend present) prints NotSupported for ctest.
+cmake_policy(SET CMP0054 NEW)  # "shards" is a string here, not the variable below
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
@@ -77,12 +83,17 @@ set(shards "")
 set(balanced "")
 foreach(i 1 2 3)
   lightcts(0 run ${ARGS} --shard ${i}/3 --out ${OUT}/shard-${i})
-  lightcts(0 run ${ARGS} --shard ${i}/3 --timings ${OUT}/whole/results.json --out ${OUT}/balanced-${i})
   list(APPEND shards ${OUT}/shard-${i})
-  list(APPEND balanced ${OUT}/balanced-${i})
+  if(MODE STREQUAL "shards")
+    lightcts(0 run ${ARGS} --shard ${i}/3 --timings ${OUT}/whole/results.json --out ${OUT}/balanced-${i})
+    list(APPEND balanced ${OUT}/balanced-${i})
+  endif()
 endforeach()
 lightcts(0 merge ${shards} --out ${OUT}/merged)
 same_results(${OUT}/whole ${OUT}/merged)
+if(MODE STREQUAL "selection-shards")
+  return()
+endif()
 lightcts(0 merge ${balanced} --out ${OUT}/merged-balanced)
 same_results(${OUT}/whole ${OUT}/merged-balanced)
 # One shard of one, merged: results.json is the whole run's key for key,

@@ -30,7 +30,8 @@ set(parallel_selection
 set(parallel_args "--backend;vulkan;--backend;gl-egl;--driver;llvmpipe;--scenes;${parallel_scenes};${parallel_selection};--mutant;distance-clamp-1e-4;--mutant;unsquared-spot;--flake-retries;0")
 add_parallel_test(jobs-1-and-2-write-the-same jobs "${parallel_args}" "LIGHTCTS_TEST_CRASH_ON=${parallel_crash}")
 add_parallel_test(shards-merge-into-the-whole-run shards "${parallel_args}" "")
-# The shards of a selection merge into the selection: the same as one run of it.
-add_parallel_test(shards-of-a-selection-merge-into-the-selection shards
+# The shards of a selection (an --exclude among the --include) merge into the
+# selection: the same as one run of it. What else a merge checks is the test above's.
+add_parallel_test(shards-of-a-selection-merge-into-the-selection selection-shards
   "--backend;vulkan;--scenes;${parallel_scenes};--include;attenuation.*;--exclude;*-range.vulkan;--mutant;distance-clamp-1e-4;--flake-retries;0"
   "")

@@ -38,7 +38,7 @@ set_tests_properties(run.zink-without-lavapipe-is-not-supported PROPERTIES LABEL
 
 # A baseline: the crash listed becomes ExpectedFail, a listed test that passes
 # UnexpectedPass.
-set(baseline ${run_out}/baseline.txt)
+set(baseline ${CMAKE_CURRENT_BINARY_DIR}/run-baseline.txt)  # the tests' inputs live beside them, not in test-out
 file(WRITE ${baseline} "# written by suite/run_tests.cmake\n${one_test},Crash  # crashed on purpose (LIGHTCTS_TEST_CRASH_ON)\n${neighbour},Fail  # listed although it passes\n")
 add_run_test(expected-failures-baseline 1 "${vulkan_only};--expected-failures;${baseline}"
   "LIGHTCTS_TEST_CRASH_ON=${one_test}" "${one_test}=ExpectedFail;${neighbour}=UnexpectedPass" "" "")
@@ -73,7 +73,7 @@ set_tests_properties(run.junit-of-real-runs-validates-against-schema PROPERTIES 
 # mismatch is detected (so it leaves evidence) listed as a known Fail, so it
 # passes unexpectedly, a failure; its testcase names its viewer through
 # --evidence-url, and the file still validates against the schema.
-set(evidence_baseline ${run_out}/evidence-baseline.txt)
+set(evidence_baseline ${CMAKE_CURRENT_BINARY_DIR}/evidence-baseline.txt)
 file(WRITE ${evidence_baseline}
   "baked.legacy-falloff-vs-realtime.vulkan,Fail  # listed so that it passes unexpectedly (suite/run_tests.cmake)\n")
 add_run_test(junit-names-the-evidence-page 1

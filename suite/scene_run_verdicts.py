@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """Splits a `lightcts run`'s results.json into one file per test, for the
-scene tests of ctest (suite/scene_tests.cmake): OUT/<test>.txt holds one
-line, `<raw_verdict> <test>: <message or numbers>`, then the evidence page
-of a failure. A combination that is not here still has its results.json
-(`run` writes it before it exits 3), each test NotSupported.
+scene and mutant tests of ctest (suite/scene_tests.cmake,
+suite/mutant_tests.cmake): OUT/<test>.txt holds one line, `<raw_verdict>
+<test>: <message or numbers>`, then the evidence page of a failure; each
+mutant of the run's mutation check gets OUT/mutants.<mutant>.<combination>.txt,
+`<status> mutants.<mutant>.<combination>: killed by ... (killers ...)`. A
+combination that is not here still has its results.json (`run` writes it
+before it exits 3), each test and mutant NotSupported.
 
     scene_run_verdicts.py RUN_DIR OUT_DIR
 
@@ -28,6 +31,16 @@ def line_of(test):
     return text
 
 
+def mutant_line(name, mutant):
+    text = '%s %s: killed by %s (its killers: %s)\n' % (
+        mutant.get('status', 'Crash'), name, ', '.join(mutant.get('killed_by') or []) or 'none',
+        ', '.join(mutant.get('killers') or []))
+    evidence = mutant.get('evidence') or {}
+    if evidence.get('viewer'):
+        text += 'evidence: %s\n' % evidence['viewer']
+    return text
+
+
 def main():
     if len(sys.argv) != 3:
         print(__doc__, file=sys.stderr)
@@ -43,7 +56,12 @@ def main():
     for test in results['tests']:
         with open(os.path.join(out_dir, test['name'] + '.txt'), 'w') as f:
             f.write(line_of(test))
-    print('%d verdicts in %s' % (len(results['tests']), out_dir))
+    mutants = results.get('mutants') or []
+    for mutant in mutants:
+        name = 'mutants.%s.%s' % (mutant['mutant'], mutant['backend'])
+        with open(os.path.join(out_dir, name + '.txt'), 'w') as f:
+            f.write(mutant_line(name, mutant))
+    print('%d verdicts and %d mutant statuses in %s' % (len(results['tests']), len(mutants), out_dir))
     return 0
 
 

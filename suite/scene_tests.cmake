@@ -90,10 +90,11 @@ foreach(scene ${scene_files})
   endforeach()
 endforeach()
 
-# Each combination draws every suite scene in one `lightcts run` (one worker
-# at a time, a fresh one every 24 scenes, so a driver start and a shader
-# compile per pipeline every 24 scenes, not per scene: SwiftShader compiles a pipeline in about a second, and every GL
-# process loads Mesa and LLVM), the scene tests above read its verdicts.
+# Each combination draws every suite scene in one `lightcts run` in one
+# worker process (suite/scene_run.cmake), so a driver start and a shader
+# compile per pipeline once, not per scene (SwiftShader compiles a pipeline
+# at its first draw in every process, and every GL process loads Mesa and
+# LLVM); the scene tests above read its verdicts.
 # Vulkan validation is on, and a layer message fails the test it came in
 # (the worker reports it as a Crash). Label `scene-runs`.
 find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
@@ -101,13 +102,22 @@ foreach(combination ${backend_combinations})
   split_combination(${combination})
   add_test(NAME scene-runs.${suffix}
            COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DPYTHON=${SYSTEM_PYTHON3}
-                   -DSCENES=${CMAKE_CURRENT_SOURCE_DIR}/scenes -DCOMBINATION=${suffix}
+                   -DSCENES=${CMAKE_CURRENT_SOURCE_DIR}/scenes -DCOMBINATION=${suffix} -DBACKEND=${backend} -DDRIVER=${driver}
                    -DOUT=${CMAKE_BINARY_DIR}/test-out/scene-runs/${suffix} -P ${CMAKE_CURRENT_SOURCE_DIR}/scene_run.cmake)
   # COST: started first (CMakeLists.txt says why); a hung driver is the
   # run's Timeout (120 s a test), not a stalled CI run.
   set_tests_properties(scene-runs.${suffix} PROPERTIES LABELS "scene-runs;${suffix}" FIXTURES_SETUP scene-run-${suffix}
     ENVIRONMENT "${backend_test_environment}" TIMEOUT 1500 COST 60)
 endforeach()
+# A reference is computed by the first run that needs it and read from the
+# cache by every later one of the same precision (conformance/reference_cache.h);
+# two runs that start together would each compute it. So the runs wait for
+# the first of their precision on Debian's drivers: lavapipe's (8 sub-pixel
+# bits, as llvmpipe) and softpipe's on EGL (4, as SwiftShader and zink).
+# DEPENDS orders the runs without requiring the first: any one still runs alone.
+set_tests_properties(scene-runs.gl-egl scene-runs.gl-osmesa PROPERTIES DEPENDS scene-runs.vulkan)
+set_tests_properties(scene-runs.gl-osmesa-softpipe scene-runs.vulkan-swiftshader scene-runs.gl-egl-zink
+                     PROPERTIES DEPENDS scene-runs.gl-egl-softpipe)
 
 # Mutants (SPEC 7): suite/mutant_tests.cmake. `lightcts run` itself:
 # suite/run_tests.cmake; choosing its tests by name: suite/test_choice_tests.cmake. Selection checks (SPEC 5.4, written by hand):

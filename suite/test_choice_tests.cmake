@@ -15,7 +15,7 @@ endfunction()
 # by globs and by a caselist (with comments and a blank line) that lists them.
 add_choice_test(include-and-exclude shadows "vulkan;gl-egl;gl-osmesa;gl-egl-zink"
   "--include;shadows.*;--exclude;*softpipe*;--exclude;*swiftshader*")
-set(shadows_caselist ${choice_out}/shadows-caselist.txt)
+set(shadows_caselist ${CMAKE_CURRENT_BINARY_DIR}/shadows-caselist.txt)
 file(WRITE ${shadows_caselist}
   "# the shadows group, softpipe left out (written by suite/test_choice_tests.cmake)\n\n"
   "shadows.*.vulkan\nshadows.*.gl-egl   # llvmpipe through EGL\nshadows.*.gl-osmesa\n"
@@ -34,7 +34,7 @@ set_tests_properties(run.choice-list-is-a-caselist-and-shards-partition-it PROPE
 
 # A glob or a caselist line that matches nothing is bad input (exit 2),
 # named with its file and line; nothing is written.
-set(typo_caselist ${choice_out}/typo-caselist.txt)
+set(typo_caselist ${CMAKE_CURRENT_BINARY_DIR}/typo-caselist.txt)
 file(WRITE ${typo_caselist} "# one good line, then a typo\nshadows.*.vulkan\nshadow.acne-no-bias.vulkan\n")
 foreach(case "include-matching-nothing-exits-2|--include;shadow.*|--include: 'shadow\\.\\*' matches no test"
               "caselist-line-matching-nothing-exits-2|--caselist;${typo_caselist}|typo-caselist.txt:3: 'shadow.acne-no-bias.vulkan' matches no test"
@@ -59,9 +59,9 @@ endforeach()
 # the selection as given, and each caselist and baseline with its SHA-256
 # (suite/check_test_choice.py computes the digests itself).
 find_program(PYTHON3 python3 REQUIRED)
-set(point_caselist ${choice_out}/point-caselist.txt)
+set(point_caselist ${CMAKE_CURRENT_BINARY_DIR}/point-caselist.txt)
 file(WRITE ${point_caselist} "attenuation.point-d-*.vulkan  # the point lights at d = 0 .. r\n")
-set(point_baseline ${choice_out}/point-baseline.txt)
+set(point_baseline ${CMAKE_CURRENT_BINARY_DIR}/point-baseline.txt)
 file(WRITE ${point_baseline} "# nothing expected to fail, listed only to be recorded\n")
 add_test(NAME run.choice-real-run-records-its-selection
          COMMAND ${CMAKE_COMMAND} -E env ${backend_test_environment}

@@ -19,7 +19,7 @@ namespace {
 
 using backends::testing::Combination;
 
-constexpr const char* kScene = LIGHTCTS_SCENES_DIR "/limits/sixty-four-lights.json";
+constexpr const char* kSixtyFourLightsScene = LIGHTCTS_SCENES_DIR "/limits/sixty-four-lights.json";
 
 class TwoBackends : public ::testing::TestWithParam<Combination> {};
 
@@ -27,7 +27,7 @@ TEST_P(TwoBackends, EachDrawsInItsOwnContextWhileTheOtherLivesAndDies) {
   std::string whyNot;
   auto first = backends::testing::createOrNull(GetParam(), whyNot);
   if (!first) GTEST_SKIP() << whyNot;
-  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(lighting::loadSceneFile(kScene)), 0);
+  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(lighting::loadSceneFile(kSixtyFourLightsScene)), 0);
   const imaging::Image before = first->render(frame);
 
   auto second = backends::testing::createOrNull(GetParam(), whyNot);

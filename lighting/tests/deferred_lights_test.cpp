@@ -19,7 +19,7 @@ namespace {
 // Far from the origin, so the camera-relative subtraction matters (SPEC 7).
 const Vec3 kFar(1e5, 0, -2e5);
 
-Light pointLight(const Vec3& position, double range) {
+Light deferredPointLight(const Vec3& position, double range) {
   Light l;
   l.type = LightType::Point;
   l.position = position;
@@ -95,7 +95,7 @@ std::vector<Vec3> sphereDirections(int count) {
 TEST(DeferredLights, PointVolumeIsAnIcosphereHoldingTheRangeSphere) {
   const Vec3 centre = kFar + Vec3(1, 0.5, -2);
   const double range = 3;
-  const Frame frame = frameWith({pointLight(centre, range)});
+  const Frame frame = frameWith({deferredPointLight(centre, range)});
   const std::vector<LightVolume> volumes = lightVolumes(frame);
   ASSERT_EQ(volumes.size(), 1u);
   EXPECT_EQ(volumes[0].light, 0);
@@ -164,7 +164,7 @@ bool insideTriangle2d(const GpuVec4& a, const GpuVec4& b, const GpuVec4& c, doub
 }
 
 TEST(DeferredLights, DirectionalVolumeIsAFullScreenTriangle) {
-  const Frame frame = frameWith({pointLight(kFar, 1), directionalLight()});
+  const Frame frame = frameWith({deferredPointLight(kFar, 1), directionalLight()});
   const std::vector<LightVolume> volumes = lightVolumes(frame);
   ASSERT_EQ(volumes.size(), 2u);
   // Packed order: directional first.
@@ -186,7 +186,7 @@ TEST(DeferredLights, DirectionalVolumeIsAFullScreenTriangle) {
 
 TEST(DeferredLights, LightBlockCarriesTheKindAndTheCameraRelativePosition) {
   const Vec3 position = kFar + Vec3(1, 2, 3);
-  const Frame frame = frameWith({pointLight(position, 4), directionalLight()});
+  const Frame frame = frameWith({deferredPointLight(position, 4), directionalLight()});
   const GpuDeferredLightBlock point = packDeferredLight(frame, 0);
   EXPECT_EQ(point.info.x, 0);
   EXPECT_EQ(point.info.y, 0);
@@ -205,7 +205,7 @@ TEST(DeferredLights, LightBlockCarriesTheKindAndTheCameraRelativePosition) {
 
 TEST(DeferredLights, LightBlockRefusesALightThatIsNotKept) {
   // Range 1 at 1000 units behind the camera: outside the frustum, not kept.
-  const Frame frame = frameWith({pointLight(kFar + Vec3(0, 6, 1008), 1)});
+  const Frame frame = frameWith({deferredPointLight(kFar + Vec3(0, 6, 1008), 1)});
   EXPECT_TRUE(lightVolumes(frame).empty());
   EXPECT_THROW(packDeferredLight(frame, 0), std::logic_error);
 }
@@ -243,7 +243,7 @@ TEST(DeferredLights, DeferredFrameLightsEveryKeptLightPerPixel) {
   // lights_per_object and the legacy profile do not apply to deferred: no
   // lists, no vertex lights, every kept light per pixel.
   std::vector<Light> lights;
-  for (int i = 0; i < 10; ++i) lights.push_back(pointLight(kFar + Vec3(i * 0.1, 0, 0), 2));
+  for (int i = 0; i < 10; ++i) lights.push_back(deferredPointLight(kFar + Vec3(i * 0.1, 0, 0), 2));
   for (Profile profile : {Profile::Srp, Profile::Legacy}) {
     Scene s;
     s.camera.position = kFar + Vec3(0, 10, 0);

@@ -61,7 +61,7 @@ TEST(GpuPacking, Std140OffsetsOfTheObjectBlock) {
   EXPECT_EQ(sizeof(GpuObjectBlock), 240u);
 }
 
-Scene farScene() {
+Scene farPackingScene() {
   Scene s;
   const Vec3 far(1e6, 0, 1e6);
   s.camera.position = far + Vec3(0, 10, 0);
@@ -80,7 +80,7 @@ Scene farScene() {
 }
 
 TEST(GpuPacking, PositionsAreRelativeToTheCamera) {
-  const Frame f = prepareFrame(prepareScene(farScene()), 0);
+  const Frame f = prepareFrame(prepareScene(farPackingScene()), 0);
   const GpuFrameBlock block = packFrameBlock(f);
   ASSERT_EQ(block.lightCounts.y, 1);
   const GpuLight& l = block.otherLights[0];

@@ -46,7 +46,7 @@ Scene spotScene(bool withCookie) {
   return s;
 }
 
-ReferenceImages render(const Scene& s) {
+ReferenceImages renderCookieScene(const Scene& s) {
   auto prepared = prepareScene(s);
   ReferenceOptions options;
   options.keepExactValues = true;
@@ -55,7 +55,7 @@ ReferenceImages render(const Scene& s) {
 
 TEST(CookieReference, TheCookieMultipliesTheLightsTermAndWidensTheTolerance) {
   const Scene with = spotScene(true);
-  const ReferenceImages a = render(with), b = render(spotScene(false));
+  const ReferenceImages a = renderCookieScene(with), b = renderCookieScene(spotScene(false));
   const Light& light = with.lights[0];
   const CameraView view = cameraViewForFrame(with, 0);
   int checked = 0, widened = 0;

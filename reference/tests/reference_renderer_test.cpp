@@ -20,7 +20,7 @@ Object plane(double size, Vec3 translate = {0, 0, 0}) {
   return o;
 }
 
-Light point(Vec3 position, double range, double intensity = 1) {
+Light pointLightAt(Vec3 position, double range, double intensity = 1) {
   Light l;
   l.type = LightType::Point;
   l.position = position;
@@ -46,7 +46,7 @@ TEST(ReferenceRenderer, RowZeroIsTheTopOfTheView) {
   // Default camera looks down with up = (0, 0, -1): the top of the image is -Z.
   Scene s = smallScene();
   s.objects.push_back(plane(20));
-  s.lights.push_back(point({0, 0.5, -3.5}, 2));
+  s.lights.push_back(pointLightAt({0, 0.5, -3.5}, 2));
   const ReferenceImages img = render(s);
   int brightestRow = -1;
   float brightest = -1;
@@ -64,7 +64,7 @@ TEST(ReferenceRenderer, RowZeroIsTheTopOfTheView) {
 TEST(ReferenceRenderer, BackgroundIsZeroAndCompared) {
   Scene s = smallScene();
   s.objects.push_back(plane(2));
-  s.lights.push_back(point({0, 1, 0}, 5));
+  s.lights.push_back(pointLightAt({0, 1, 0}, 5));
   const ReferenceImages img = render(s);
   EXPECT_EQ(img.value.at(0, 0, 0), 0.0f);
   EXPECT_EQ(img.value.at(0, 0, 3), 1.0f);
@@ -80,7 +80,7 @@ TEST(ReferenceRenderer, SilhouettePixelsAreMaskedInteriorOnesAreNot) {
   Scene s = smallScene();
   s.image = {40, 40};
   s.objects.push_back(plane(2, {0.125, 0, 0}));
-  s.lights.push_back(point({0, 1, 0}, 5));
+  s.lights.push_back(pointLightAt({0, 1, 0}, 5));
   const ReferenceImages img = render(s);
   for (int column : {16, 24}) EXPECT_EQ(img.value.at(column, 20, 3), 0.0f) << column;
   for (int column : {2, 15, 17, 20, 23, 25}) EXPECT_EQ(img.value.at(column, 20, 3), 1.0f) << column;
@@ -90,7 +90,7 @@ TEST(ReferenceRenderer, CoplanarSurfacesAreMasked) {
   Scene s = smallScene();
   s.objects.push_back(plane(4));
   s.objects.push_back(plane(4, {2, 0, 0}));  // overlaps the first for x in [0, 2]
-  s.lights.push_back(point({0, 1, 0}, 5));
+  s.lights.push_back(pointLightAt({0, 1, 0}, 5));
   const ReferenceImages img = render(s);
   // x = 1 is column (1 + 5) / 10 * 32 = 19.2; x = -1.5 is column 11.2.
   EXPECT_EQ(img.value.at(19, 12, 3), 0.0f);
@@ -103,7 +103,7 @@ TEST(ReferenceRenderer, CoplanarSurfacesAreMasked) {
 TEST(ReferenceRenderer, TolerancesArePositiveFiniteAndUnscaled) {
   Scene s = smallScene();
   s.objects.push_back(plane(20));
-  s.lights.push_back(point({0.3, 0.7, 0.2}, 4, 3));
+  s.lights.push_back(pointLightAt({0.3, 0.7, 0.2}, 4, 3));
   const ReferenceImages a = render(s);
   s.expect.toleranceScale = 4;
   const ReferenceImages b = render(s);
@@ -141,7 +141,7 @@ TEST(ReferenceRenderer, FlatShadingHasOnlyArithmeticTolerance) {
 TEST(ReferenceRenderer, ToleranceTermsSumToTheTolerance) {
   Scene s = smallScene();
   s.objects.push_back(plane(20));
-  s.lights.push_back(point({0.3, 0.7, 0.2}, 4, 3));
+  s.lights.push_back(pointLightAt({0.3, 0.7, 0.2}, 4, 3));
   auto prepared = prepareScene(s);
   ReferenceOptions options;
   options.keepToleranceTerms = true;
@@ -165,8 +165,8 @@ TEST(ReferenceRenderer, IdealIgnoresTheBudget) {
   // the ideal one does not.
   Scene s = smallScene();
   s.objects.push_back(plane(20));
-  for (int k = 0; k < 64; ++k) s.lights.push_back(point({-3 + 0.1 * (k % 8), 2, -3 + 0.1 * (k / 8)}, 0.5));
-  s.lights.push_back(point({4.5, 0.5, 3.5}, 1, 5));
+  for (int k = 0; k < 64; ++k) s.lights.push_back(pointLightAt({-3 + 0.1 * (k % 8), 2, -3 + 0.1 * (k / 8)}, 0.5));
+  s.lights.push_back(pointLightAt({4.5, 0.5, 3.5}, 1, 5));
   const ReferenceImages budget = render(s), ideal = render(s, true);
   // (4.5, 3.5) is column (4.5 + 6.67) / 13.33 * 32 = 26.8, row (3.5 + 5) / 10 * 24 = 20.4.
   EXPECT_EQ(budget.value.at(26, 20, 0), 0.0f);
@@ -181,7 +181,7 @@ TEST(ReferenceRenderer, ValueOnlyKeepsValueAndMaskBitForBit) {
   s.image = {40, 40};
   s.objects.push_back(plane(20));
   s.objects.push_back(plane(2, {0.125, 0.3, 0}));  // silhouettes over the floor
-  for (int k = 0; k < 65; ++k) s.lights.push_back(point({-3 + 0.1 * (k % 8), 1 + 0.05 * (k / 8), -3 + 0.1 * (k / 8)}, 6));
+  for (int k = 0; k < 65; ++k) s.lights.push_back(pointLightAt({-3 + 0.1 * (k % 8), 1 + 0.05 * (k / 8), -3 + 0.1 * (k / 8)}, 6));
   auto prepared = prepareScene(s);
   const ReferenceRenderer renderer(prepared);
   const Frame frame = prepareFrame(prepared, 0);

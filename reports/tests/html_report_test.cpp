@@ -15,7 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-long long count(const std::string& text, const std::string& what) {
+long long occurrences(const std::string& text, const std::string& what) {
   long long n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
@@ -45,13 +45,13 @@ TEST(HtmlReport, HasEverySection) {
   EXPECT_NE(html.find("Mesa 22.3.6"), std::string::npos);
   EXPECT_NE(html.find("Tests that need attention (6)"), std::string::npos);  // Fail x2, QW, Crash, Timeout, UP
   EXPECT_NE(html.find("All tests (10)"), std::string::npos);
-  EXPECT_EQ(count(html, "<section class=\"test "), 6);
+  EXPECT_EQ(occurrences(html, "<section class=\"test "), 6);
   const std::size_t popping = html.find("<h3>limits.popping-64</h3>");  // the popping table
   ASSERT_NE(popping, std::string::npos);
   const std::string table = html.substr(popping, html.find("</table>", popping) - popping);
   EXPECT_NE(table.find("<th colspan=\"3\">vulkan</th><th colspan=\"3\">gl-egl-softpipe</th>"), std::string::npos)
       << "the timed-out test of the animated scene has a column too";
-  EXPECT_EQ(count(table, "<tr><td class=\"n\">"), 3) << "one row per frame";
+  EXPECT_EQ(occurrences(table, "<tr><td class=\"n\">"), 3) << "one row per frame";
   EXPECT_NE(table.find("<td class=\"n\">0.5</td><td class=\"n\">0.4</td>"), std::string::npos);
   EXPECT_NE(html.find("by attenuation.point-d-half-range, attenuation.point-d-0-8-range"), std::string::npos);
   EXPECT_NE(html.find("<span class=\"v v-survived\">survived</span>"), std::string::npos);
@@ -74,7 +74,7 @@ TEST(HtmlReport, ImagesAreRelativeToTheReportFolder) {
       "../mutants/unsquared-range.gl-egl-softpipe/error-mask.png",
   };
   EXPECT_EQ(imageSources(html), expected);
-  EXPECT_EQ(count(html, "<img "), 8);
+  EXPECT_EQ(occurrences(html, "<img "), 8);
   EXPECT_NE(html.find("<a href=\"../mutants/unsquared-range.vulkan/error-mask.png\">error mask</a>"),
             std::string::npos);
   EXPECT_NE(html.find("libOSMesa.so.8 not found <a href=\"../logs/gl-osmesa.log\">log</a>"), std::string::npos);
@@ -152,7 +152,7 @@ TEST(HtmlReport, WritesIndexHtmlInTheReportFolderAndMarksMissingImages) {
   std::stringstream text;
   text << file.rdbuf();
   EXPECT_EQ(text.str(), htmlReport(testing::sampleResults(), run, run / "report"));
-  EXPECT_EQ(count(text.str(), "(missing when the report was written)"), 6);  // evidence figures
+  EXPECT_EQ(occurrences(text.str(), "(missing when the report was written)"), 6);  // evidence figures
   long long entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(run / "report")) ++entries;
   EXPECT_EQ(entries, 1) << "no temporary file is left behind";

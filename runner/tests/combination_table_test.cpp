@@ -37,7 +37,6 @@ TEST(CombinationTable, CMakeReadsTheSameRows) {
 TEST(CombinationTable, LookUps) {
   ASSERT_NE(findCombination("gl-osmesa-softpipe"), nullptr);
   EXPECT_EQ(findCombination("gl-osmesa-softpipe")->backend, "gl-osmesa");
-  EXPECT_TRUE(findCombination("gl-osmesa-softpipe")->isSlowDriver());
   // The bench's second paths to a driver: OSMesa beside EGL, for both drivers.
   for (const char* second : {"gl-osmesa", "gl-osmesa-softpipe"}) EXPECT_TRUE(findCombination(second)->isSecondContextPath());
   for (const char* first : {"vulkan", "gl-egl", "gl-egl-softpipe"}) EXPECT_FALSE(findCombination(first)->isSecondContextPath());
@@ -48,7 +47,6 @@ TEST(CombinationTable, LookUps) {
   EXPECT_EQ(findCombination("gl-egl", "softpipe")->suffix, "gl-egl-softpipe");
   EXPECT_EQ(findCombination("gl-egl", "zink")->suffix, "gl-egl-zink");
   EXPECT_EQ(findCombination("gl-osmesa", "zink"), nullptr);
-  EXPECT_FALSE(findCombination("gl-egl-zink")->isSlowDriver());
   // zink draws through lavapipe, which the vulkan combination times.
   EXPECT_TRUE(findCombination("gl-egl-zink")->isSecondContextPath());
   EXPECT_EQ(findCombination("vulkan", "")->suffix, "vulkan");

@@ -21,8 +21,8 @@
 namespace bench {
 
 // The 64-light field's size (the bench's budgets): 1280x720, the
-// size every number of docs/performance.md is of; 320x180 on a slow driver
-// (softpipe: a sixteenth of the pixels, still seconds a frame); 320x180 with --quick,
+// size every number of docs/performance.md is of; 160x90 on a slow driver
+// (driver_speed.h: a sixty-fourth of the pixels); 320x180 with --quick,
 // which proves each mode runs and measures nothing (160x90 on a slow driver). Its scene name,
 // `lights64-<W>x<H>`, says which, in every benchmark name.
 struct FieldSize {

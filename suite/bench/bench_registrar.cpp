@@ -50,8 +50,9 @@ const BenchFrame* madeFrame(benchmark::State& st, LazyBenchFrame& bench) {
 }  // namespace
 
 // --quick proves each benchmark runs and measures nothing: one
-// iteration, one repetition, on every driver. A slow driver (softpipe,
-// seconds a frame): one iteration, 3 repetitions. Otherwise 5: with 3
+// iteration, one repetition, on every driver. A slow driver (by its
+// measured speed, driver_speed.h: seconds a frame): one iteration, 3
+// repetitions. Otherwise 5: with 3
 // against 3, `lightcts bench compare`'s Mann-Whitney U is never significant
 // (its smallest p is 0.1), so no slowdown could ever be shown.
 Registrar::Registrar(std::shared_ptr<RunState> run) : run_(std::move(run)) {

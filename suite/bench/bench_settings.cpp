@@ -37,16 +37,10 @@ std::vector<std::string> tableDrivers() {
   return drivers;
 }
 
+// The table's combination of this backend and driver; nullptr for a pair it
+// does not have (a Mesa driver on Vulkan, swiftshader on GL).
 const backends::BackendCombination* combinationOf(const std::string& backend, const std::string& driver) {
-  if (const auto* c = backends::findCombination(backend, driver)) return c;
-  // A backend the table gives no driver choice (Vulkan) has always ignored a
-  // --driver of normal speed; only a slow one, which would pick the
-  // scaled-down set, is refused.
-  const backends::BackendCombination* fixed = backends::findCombination(backend, "");
-  const auto& all = backends::backendCombinations();
-  const auto named = std::find_if(all.begin(), all.end(), [&](const auto& c) { return c.driver == driver; });
-  if (fixed && fixed->driver.empty() && named != all.end() && !named->isSlowDriver()) return fixed;
-  return nullptr;
+  return backends::findCombination(backend, driver);
 }
 
 // 0, or kExitBadInput with the reason on stderr.
@@ -142,6 +136,15 @@ ParsedFlags parseFlags(int argc, char** argv, const std::filesystem::path& defau
       else if (value == "wall") settings.timeSource = TimeSource::Wall;
       else {
         std::fprintf(stderr, "render_bench: --time_source is auto, device or wall, not '%s'\n", std::string(value).c_str());
+        parsed.usageError = kExitBadInput;
+        return parsed;
+      }
+    } else if (i > 0 && startsWith(a, "--set=", value)) {
+      if (value == "auto") settings.frameSet = Settings::FrameSet::Measured;
+      else if (value == "full") settings.frameSet = Settings::FrameSet::Full;
+      else if (value == "scaled") settings.frameSet = Settings::FrameSet::Scaled;
+      else {
+        std::fprintf(stderr, "render_bench: --set is auto, full or scaled, not '%s'\n", std::string(value).c_str());
         parsed.usageError = kExitBadInput;
         return parsed;
       }

@@ -27,6 +27,10 @@ struct Settings {
   bool quick = false;
   bool suiteScenes = false;
   TimeSource timeSource = TimeSource::Calibrated;  // --time_source=auto|device|wall
+  // --set=auto|full|scaled: which set the combination runs. auto, the
+  // default, decides by the driver's measured speed (driver_speed.h); full
+  // and scaled force one.
+  enum class FrameSet { Measured, Full, Scaled } frameSet = FrameSet::Measured;
   std::filesystem::path scenes;  // --scenes; the caller's default when not given
   // --ideal_cache=DIR: the ideal references, untimed and the same for every
   // combination, read from DIR when an earlier process of the run left them
@@ -56,7 +60,7 @@ struct Settings {
   // and measures a small frame. Zero: the set's own.
   int fieldWidth = 0, fieldHeight = 0;
   // The combination backend and driver select: its suffix names every
-  // benchmark, and a slow driver (softpipe) runs the scaled-down set.
+  // benchmark.
   const backends::BackendCombination* combination = nullptr;
 };
 

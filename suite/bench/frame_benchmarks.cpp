@@ -20,15 +20,13 @@
 //   frame/<b>/lightmap-1280x720/realtime          the same lights in real time
 //   frame/<b>/lightmap-shadow-1280x720/<mode>     the same with one shadowed light: realtime, lightmap-64, -512
 // frame_readback times the light-path modes only (all-lights, per-object,
-// legacy-4+4, deferred-*): a readback's cost does not depend on the mode. The
-// shadow-map and full-shader modes repeat 3 times, the others 5. A second
-// context path to a driver (gl-osmesa, gl-osmesa-softpipe: OSMesa beside
-// EGL) runs the field's light-path modes and the all-lights pipeline only.
-// A slow driver (softpipe, about 150 times slower than llvmpipe) runs a
-// scaled-down set: the 64-light field in every mode but full-shader
-// all-lights, `frame` only, one iteration times 3 repetitions, and the curves
-// at 256x144 (resolution: 128x72 to 512x288), so that one softpipe process
-// stays near 2 minutes.
+// legacy-4+4, clustered, deferred-*): a readback's cost does not depend on
+// the mode. A second context path to a driver (gl-osmesa beside gl-egl,
+// gl-egl-zink beside vulkan) runs the field's light-path modes and the
+// all-lights pipeline only. A slow driver, by its measured speed
+// (driver_speed.h: a 1280x720 field frame estimated over a second), runs a
+// scaled-down set: the fields at 160x90, `frame` only, one iteration times
+// 3 repetitions, no cost curves; `--set=full` runs the full set anyway.
 //
 // The steps: flags (bench_settings), the run's state and its pipeline cache
 // folder (run_state), the backend, the JSON context and the time source
@@ -41,6 +39,7 @@
 #include "suite/bench/bench_registrar.h"
 #include "suite/bench/bench_reporters.h"
 #include "suite/bench/bench_settings.h"
+#include "suite/bench/driver_speed.h"
 #include "suite/bench/error_prepass.h"
 #include "suite/bench/lighting_cost.h"
 #include "suite/bench/run_state.h"
@@ -69,8 +68,6 @@ void addDeviceContext(const RunState& run) {
   benchmark::AddCustomContext(run.suffix() + ".driver", info.driver);
   benchmark::AddCustomContext(run.suffix() + ".driver_version", info.driverVersion);
   benchmark::AddCustomContext(run.suffix() + ".api", info.apiVersion);
-  const std::string set = run.slow() ? run.settings.combination->driver + " (scaled down)" : "full";
-  benchmark::AddCustomContext("frame_bench.set", set + (run.settings.quick ? ", quick" : ""));
 }
 
 // Google Benchmark runs them in this order: every benchmark of the
@@ -162,9 +159,14 @@ int runFrameBenchmarks(int argc, char** argv) {
   }
   addDeviceContext(*run);
   try {
+    // The set first: the calibration frame's size and every family depend on it.
+    const std::string set = chooseFrameSet(*run) + (run->settings.quick ? ", quick" : "");
+    std::fprintf(stderr, "render_bench: %s: the %s set\n", run->suffix().c_str(), set.c_str());
+    benchmark::AddCustomContext("frame_bench.set", set);
     benchmark::AddCustomContext("frame_bench.time", calibrateTimeSource(*run));
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "render_bench: %s: the calibration draw failed: %s\n", run->suffix().c_str(), e.what());
+    std::fprintf(stderr, "render_bench: %s: the speed probe or calibration draw failed: %s\n", run->suffix().c_str(),
+                 e.what());
     cleanUp();
     return kExitInternalError;
   }

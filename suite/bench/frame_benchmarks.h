@@ -9,8 +9,9 @@ namespace bench {
 
 // Our flags, taken out before Google Benchmark sees the rest (bench_settings.h):
 //   --backend=vulkan|gl-egl|gl-osmesa   (default vulkan; backends::specBackendNames)
-//   --driver=llvmpipe|softpipe          (a driver of that backend in backends/backend_combinations.def;
-//                                        a slow one, softpipe, runs a scaled-down set)
+//   --driver=llvmpipe|softpipe|...      (a driver of that backend in backends/backend_combinations.def)
+//   --set=auto|full|scaled              the full or the scaled-down set; auto (default): by the
+//                                        driver's measured speed (driver_speed.h)
 //   --peak_gflops=X                     adds the limit_ms and flops_per_pixel_light counters
 //   --quick                             fewer points and repetitions (the ctest smoke test)
 //   --scenes=DIR                        suite scenes (default: the source tree's suite/scenes)

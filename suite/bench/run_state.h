@@ -38,8 +38,9 @@ struct RunState {
 
   // The combination's suffix (vulkan, gl-egl, gl-osmesa-softpipe, ...): part of every name.
   const std::string& suffix() const { return settings.combination->suffix; }
-  // A slow driver (softpipe): the scaled-down set.
-  bool slow() const { return settings.combination->isSlowDriver(); }
+  // A slow driver, by its measured speed (driver_speed.h): the scaled-down set.
+  bool slow() const { return slowDriver; }
+  bool slowDriver = false;
   bool secondContextPath() const { return settings.combination->isSecondContextPath(); }
 
   // The backend object shared by every draw benchmark of its shader variant.
