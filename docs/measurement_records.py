@@ -16,13 +16,13 @@ two-column table of fields:
     ...
 
 Prose elsewhere quotes a record through a link to its anchor,
-`[15.4 minutes](measurements.md#fresh-clone)`, and the check holds every
+`[N minutes](measurements.md#fresh-clone)`, and the check holds every
 number of the link's text to the record's figure.
 """
 import re
 
 # The fields every record has, in the order they are written.
-FIELDS = ['figure', 'date', 'commit', 'machine', 'load', 'command', 'suite']
+FIELDS = ['figure', 'labels', 'date', 'commit', 'machine', 'load', 'command', 'suite']
 REQUIRED = ['figure', 'date', 'commit', 'machine', 'command']
 HEADING = re.compile(r'^## ([a-z0-9][a-z0-9-]*)\s*$', re.MULTILINE)
 ROW = re.compile(r'^\| (\w+) \| (.*) \|\s*$')  # a value's own '|' is written '\|'

@@ -12,7 +12,8 @@ Each step is run with bash in DIR (default: here) in the order given and
 timed by the wall clock; with --repeat N each step runs N times and its
 median is kept. The figure is the steps' times (led by their total with
 --total), then what ctest said of its tests when a step ran ctest ("2563
-tests passed"), then the note. A step that fails stops the measurement and
+tests passed"), then the note; ctest's label summary, when a step printed
+one, is the record's `labels` (process-seconds and tests per label). A step that fails stops the measurement and
 writes nothing (exit 1). Exit 2 for bad arguments.
 
 Example, a fresh clone's build and tests:
@@ -97,7 +98,7 @@ def main():
     with open('/proc/loadavg', encoding='utf-8') as f:
         load = f.read().split()[0]
     started = datetime.datetime.now(datetime.timezone.utc)
-    times, said = [], []
+    times, said, labels = [], [], []
     for label, command in steps:
         runs = []
         for _ in range(args.repeat):
@@ -110,6 +111,9 @@ def main():
                 m = re.search(r'(\d+)% tests passed, (\d+) tests? failed out of (\d+)', line)
                 if m:
                     tests = f'{int(m.group(3)) - int(m.group(2))} of {m.group(3)} tests passed'
+                label = re.match(r'^(\S+)\s+=\s+([\d.]+) sec\*proc \((\d+) tests?\)', line)
+                if label:
+                    labels.append(f'{label.group(1)} {float(label.group(2)):.0f} ({label.group(3)})')
             process.wait()
             runs.append(time.monotonic() - t0)
             if process.returncode != 0:
@@ -133,6 +137,7 @@ def main():
         'date': started.strftime('%Y-%m-%d'),
         'commit': commit(args.directory),
         'machine': machine(),
+        'labels': ('process-seconds (tests) per ctest label: ' + ', '.join(labels)) if labels else '',
         'load': f'{load} (one-minute load average when it started)',
         'command': '; '.join(f'`{c}`' for _, c in steps) + (f" in {args.directory}" if args.directory != '.' else ''),
     }
