@@ -111,9 +111,9 @@ def main():
                 m = re.search(r'(\d+)% tests passed, (\d+) tests? failed out of (\d+)', line)
                 if m:
                     tests = f'{int(m.group(3)) - int(m.group(2))} of {m.group(3)} tests passed'
-                label = re.match(r'^(\S+)\s+=\s+([\d.]+) sec\*proc \((\d+) tests?\)', line)
-                if label:
-                    labels.append(f'{label.group(1)} {float(label.group(2)):.0f} ({label.group(3)})')
+                summary = re.match(r'^(\S+)\s+=\s+([\d.]+) sec\*proc \((\d+) tests?\)', line)
+                if summary:
+                    labels.append(f'{summary.group(1)} {float(summary.group(2)):.0f} ({summary.group(3)})')
             process.wait()
             runs.append(time.monotonic() - t0)
             if process.returncode != 0:
