@@ -3,9 +3,12 @@
 #include "app/exit_status.h"
 #include "app/scene_input.h"
 #include "backends/backend_combinations.h"
+#include "runner/worker_plan.h"
+#include "shaders/shader_variant.h"
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -83,8 +86,10 @@ std::string caseName(const std::string& scenePath, const BackendArguments& args)
   // a driver the table does not know keeps its name in the case, so two
   // such runs never share evidence.
   const std::string suffix = backends::combinationWithDriver(args.backend, args.driver).suffix;
-  const std::string variant = args.admissible == "none" ? "" : "@" + args.admissible;
-  return path.parent_path().filename().string() + "." + path.stem().string() + variant + "." + suffix;
+  const std::string scene = path.parent_path().filename().string() + "." + path.stem().string();
+  const std::optional<shaders::Admissible> variant = shaders::admissibleFromName(args.admissible);
+  if (!variant || *variant == shaders::Admissible::None) return scene + "." + suffix;
+  return runner::admissibleTestName(scene, *variant, suffix);
 }
 
 }  // namespace app

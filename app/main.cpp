@@ -166,8 +166,9 @@ int main(int argc, char** argv) {
   runCmd->add_option("--jobs,-j", run.jobs, "Worker processes at once (default: one per core)")
       ->check(CLI::PositiveNumber);
   runCmd->add_option("--tests-per-worker", run.testsPerWorker,
-                     "Tests a worker process runs before a fresh one takes over (fewer starts of the driver and its "
-                     "shader compiler against more parts to spread over --jobs)")
+                     "The model's tests a worker process runs before a fresh one takes over; mutants and admissible "
+                     "variants go whole into parts of up to as many tasks (fewer starts of the driver and its shader "
+                     "compiler against more parts to spread over --jobs)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   std::string shardText;

@@ -92,16 +92,6 @@ bool isRunFailure(MutantStatus status) {
   return true;
 }
 
-bool isRunFailure(AdmissibleStatus status) {
-  switch (status) {
-    case AdmissibleStatus::Sound:
-    case AdmissibleStatus::NotSupported: return false;
-    case AdmissibleStatus::Unsound:
-    case AdmissibleStatus::Incomplete: return true;
-  }
-  return true;
-}
-
 CiOutcome ciOutcome(BackendStatus status) {
   switch (status) {
     case BackendStatus::Ran: return CiOutcome::Pass;

@@ -43,7 +43,6 @@ std::ostream& operator<<(std::ostream& out, AdmissibleStatus status);
 // Survived, Crashed or Timed out; an admissible variant Unsound or Incomplete.
 bool isRunFailure(BackendStatus status);
 bool isRunFailure(MutantStatus status);
-bool isRunFailure(AdmissibleStatus status);
 
 // What it means to CI: Ran and Killed pass, NotSupported is a skip, a
 // backend Error and a mutant's Crash or Timeout are errors, Survived fails.

@@ -8,8 +8,8 @@ wrong line, and must exit 1 naming it.
   `--sharpnes` (an undocumented option and a documented one that does not
   exist, both directions at once);
 - check_measured_figures.py on a page that types a run's time by hand, one
-  whose link to a record states another number, and a record measured on
-  a suite one scene smaller than the tree's.
+  whose link to a record states another number and one another unit, and a
+  record measured on a suite one scene smaller than the tree's.
 
     check_docs_catch_errors.py LIGHTCTS SOURCE_DIR
 
@@ -65,11 +65,12 @@ def main():
         by_hand = os.path.join(tmp, 'by-hand.md')
         with open(by_hand, 'w', encoding='utf-8') as f:
             f.write('## Cost\n\nThe whole run took 94 s on two cores (2026-12-06), '
-                    'or [95 s](measurements.md#whole-run).\n')
+                    'or [95 s](measurements.md#whole-run), or [94 min](measurements.md#whole-run).\n')
         ok = expect_failure('a time typed by hand, a wrong quote and a stale record',
                             [sys.executable, os.path.join(HERE, 'check_measured_figures.py'), root,
                              '--records', records, by_hand],
-                            ['"94 s" is a time stated by hand', '"95 s" states 95; the record whole-run says "94 s"',
+                            ['"94 s" is a time stated by hand', '"95 s" states 95 s; the record whole-run says "94 s"',
+                             '"94 min" states 94 min; the record whole-run says "94 s"',
                              f'whole-run was measured with {scenes - 1} scenes, 7 combinations, 33 mutants; '
                              f'the tree has {scenes} scenes']) and ok
     return 0 if ok else 1

@@ -35,8 +35,19 @@ import measurement_records
 from check_doc_counts import tree_counts
 from doc_pages import pages, shown
 
-TIME = re.compile(r'(?<![\w.\-/√])(\d[\d,]*(?:\.\d+)?)(?:-\d+(?:\.\d+)?)?\s?(ms|s|min|minutes|seconds|us)\b(?!-)')
-SETTING = re.compile(r'(?:default|timeout|budget of|limit of|at most|at least|up to|every|over|under|within|once for)(?: about)?\s*$', re.IGNORECASE)
+TIME = re.compile(r'(?<![\w.\-/√])(\d[\d,]*(?:\.\d+)?)(?:-\d+(?:\.\d+)?)?(?:\s|-)?'
+                  r'(ms|us|µs|s|secs?|seconds?|mins?|minutes?|h|hours?)\b(?![-(]\w|\()')
+# What introduces a setting or a limit, not a measurement ("default 120 s",
+# "a budget of 10 minutes", "up to 5 bakes within about 1 s").
+SETTING = re.compile(r'(?:default|timeout|budget of|limit of|at most|at least|\d+ \w+ within|once for)'
+                     r'(?: about)?\s*$', re.IGNORECASE)
+UNITS = {'ms': 'ms', 'us': 'us', 'µs': 'us', 's': 's', 'sec': 's', 'secs': 's', 'second': 's', 'seconds': 's',
+         'min': 'min', 'mins': 'min', 'minute': 'min', 'minutes': 'min', 'h': 'h', 'hour': 'h', 'hours': 'h'}
+
+
+def times(text):
+    """The (number, unit) pairs a text states as times."""
+    return {(m.group(1).replace(',', ''), UNITS[m.group(2)]) for m in TIME.finditer(text)}
 LINK = re.compile(r'\[([^\]]*)\]\(([^)\s]*measurements\.md)#([a-z0-9-]+)\)')
 DATE = re.compile(r'\b20\d\d-\d\d-\d\d\b')
 OWN_PAGES = ('measurements.md', 'performance.md')
@@ -78,17 +89,23 @@ def check_page(path, root, records, problems):
         if record is None:
             problems.append(f'{shown(path, root)}:{line}: "{m.group(0)}" names no record of docs/measurements.md')
             continue
-        figure = measurement_records.numbers(record.get('figure', ''))
-        for n in measurement_records.numbers(m.group(1)):
-            if n not in figure:
-                problems.append(f'{shown(path, root)}:{line}: "{m.group(1)}" states {n}; the record {m.group(3)} '
-                                f'says "{record.get("figure", "")}"')
+        # A time is held to the record's times, unit and all; any other number
+        # to the record's numbers.
+        figure_text = record.get('figure', '')
+        figure_times, figure = times(figure_text), measurement_records.numbers(figure_text)
+        stated_times = times(m.group(1))
+        timed = {n for n, _ in stated_times}
+        wrong = [f'{n} {u}' for n, u in sorted(stated_times - figure_times)]
+        wrong += [n for n in measurement_records.numbers(m.group(1)) if n not in timed and n not in figure]
+        for n in wrong:
+            problems.append(f'{shown(path, root)}:{line}: "{m.group(1)}" states {n}; the record {m.group(3)} '
+                            f'says "{figure_text}"')
     if name == 'measurements.md':
         return 0
     stated = 0
     sections = [(s.start(), s.group(0)) for s in re.finditer(r'(?ms)^#{1,4} .*?(?=^#{1,4} |\Z)', text)] or [(0, text)]
     for m in TIME.finditer(plain):
-        if any(a <= m.start() < b for a, b in quoted) or SETTING.search(plain[max(0, m.start() - 20):m.start()]):
+        if any(a <= m.start() < b for a, b in quoted) or SETTING.search(plain[max(0, m.start() - 40):m.start()]):
             continue
         stated += 1
         line = text.count('\n', 0, m.start()) + 1

@@ -25,16 +25,22 @@ import re
 FIELDS = ['figure', 'labels', 'date', 'commit', 'machine', 'load', 'command', 'suite']
 REQUIRED = ['figure', 'date', 'commit', 'machine', 'command']
 HEADING = re.compile(r'^## ([a-z0-9][a-z0-9-]*)\s*$', re.MULTILINE)
+ANY_HEADING = re.compile(r'^#{1,6} ', re.MULTILINE)
+
+
+def record_end(text, start):
+    """Where the record whose heading starts at `start` ends: at the next
+    heading of any kind, so text under another heading is never taken."""
+    following = ANY_HEADING.search(text, text.index('\n', start) + 1 if '\n' in text[start:] else len(text))
+    return following.start() if following else len(text)
 ROW = re.compile(r'^\| (\w+) \| (.*) \|\s*$')  # a value's own '|' is written '\|'
 
 
 def parse(text):
     """{id: {'what': str, field: value, 'line': line number}}, in page order."""
     records = {}
-    heads = list(HEADING.finditer(text))
-    for i, head in enumerate(heads):
-        end = heads[i + 1].start() if i + 1 < len(heads) else len(text)
-        body = text[head.end():end]
+    for head in HEADING.finditer(text):
+        body = text[head.end():record_end(text, head.start())]
         record = {'line': text.count('\n', 0, head.start()) + 1, 'what': ''}
         for line in body.strip().split('\n'):
             row = ROW.match(line)
@@ -55,11 +61,10 @@ def format_record(name, record):
 def replace_record(text, name, record):
     """The page with the record `name` replaced, or added at the end."""
     new = format_record(name, record)
-    heads = list(HEADING.finditer(text))
-    for i, head in enumerate(heads):
+    for head in HEADING.finditer(text):
         if head.group(1) == name:
-            end = heads[i + 1].start() if i + 1 < len(heads) else len(text)
-            return text[:head.start()] + new + ('\n' if i + 1 < len(heads) else '') + text[end:]
+            end = record_end(text, head.start())
+            return text[:head.start()] + new + ('\n' if end < len(text) else '') + text[end:]
     return text.rstrip('\n') + '\n\n' + new
 
 

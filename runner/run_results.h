@@ -24,7 +24,8 @@ std::string backendCounts(const results::BackendRecord& backend, bool mutantsChe
 
 // The admissible variants' summary: per backend, how many were sound, and
 // each variant that was not with its failed tests ("run: admissible: vulkan:
-// 15 sound" / "run: admissible: vulkan: quotient-up unsound: a.b@quotient-up.vulkan").
+// 15 variant(s) sound over 2460 test(s)" / "run: admissible: vulkan:
+// quotient-up unsound: a.b@quotient-up.vulkan").
 // results::admissibleRecords of `tests`, with each variant's `what` and
 // `grant` from shaders/shader_interface.def.
 std::vector<results::AdmissibleRecord> describedAdmissibleRecords(const std::vector<results::TestRecord>& tests);

@@ -105,12 +105,14 @@ def main():
             t0 = time.monotonic()
             process = subprocess.Popen(['bash', '-c', command], cwd=args.directory, stdout=subprocess.PIPE,
                                        stderr=subprocess.STDOUT, text=True)
-            tests = None
-            for line in process.stdout:  # shown as it comes; ctest's summary line is kept
+            tests, skipped, labels = None, 0, []  # ctest's, of the last repetition
+            for line in process.stdout:  # shown as it comes; ctest's summary lines are kept
                 sys.stdout.write(line)
+                skipped += '***Skipped' in line  # ctest counts a skip among the "tests passed"
                 m = re.search(r'(\d+)% tests passed, (\d+) tests? failed out of (\d+)', line)
                 if m:
-                    tests = f'{int(m.group(3)) - int(m.group(2))} of {m.group(3)} tests passed'
+                    total, failed = int(m.group(3)), int(m.group(2))
+                    tests = f'{total - failed - skipped} of {total} tests passed, {skipped} skipped, {failed} failed'
                 summary = re.match(r'^(\S+)\s+=\s+([\d.]+) sec\*proc \((\d+) tests?\)', line)
                 if summary:
                     labels.append(f'{summary.group(1)} {float(summary.group(2)):.0f} ({summary.group(3)})')

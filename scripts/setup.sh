@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libbenchmark-tools python3-scipy  # Google Benchmark's tools/compare.py reads bench.json (its test)
   python3  # the docs checks (docs/check_*.py) and the scripts of suite/ that tests run
+  python3-numpy  # suite/gltf/check_same_images.py compares images as arrays
   # shaders: GLSL -> SPIR-V at build time (glslang), SPIR-V -> GLSL for OpenGL
   glslang-tools glslang-dev spirv-cross libspirv-cross-c-shared-dev
   # Vulkan on Mesa's lavapipe, with the validation layers for test runs

@@ -49,7 +49,7 @@ void main() {
   } else if (clusteredLights()) {
     ivec2 range = clusterRange(clusterOf(vClip, p));
     for (int k = 0; k < range.y; ++k) {
-      vec3 radiance = packedLight(frameData.otherLights[clusterLight(range.x + k)], p, N, mask, textures, L);
+      vec3 radiance = packedLight(frameData.otherLights[clusterLight(range.x + summationIndex(k, range.y))], p, N, mask, textures, L);
       addLight(sums, surface, radiance, L);
     }
   } else {

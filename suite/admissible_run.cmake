@@ -24,7 +24,7 @@ execute_process(COMMAND ${LIGHTCTS} run --backend ${BACKEND} ${driver_args} --sc
                         --out ${OUT}
                 RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
 if(status EQUAL 3)
-  message("NotSupported: ${COMBINATION} is not present here\n${output}")
+  message("NotSupported: no backend: ${COMBINATION} is not present here\n${output}")
   return()
 endif()
 include(${CMAKE_CURRENT_LIST_DIR}/worker_logs_check.cmake)

@@ -5,8 +5,6 @@
 set(gltf_dir ${CMAKE_CURRENT_SOURCE_DIR}/gltf)
 set(gltf_scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes/gltf)
 set(gltf_out ${CMAKE_BINARY_DIR}/test-out/gltf)
-# Debian's Python (OpenImageIO's module lives there), not whatever is first on PATH.
-set(debian_python /usr/bin/python3)
 
 # The plane, sphere and box written as glTF (suite/gltf/generate_models.py),
 # imported, against the same built-in meshes: each backend's image and the
@@ -19,7 +17,7 @@ foreach(shape plane sphere box)
   add_test(NAME ${test}
            COMMAND sh -c "$<TARGET_FILE:lightcts> reference --scene ${builtin} --out ${out}/builtin && \
 $<TARGET_FILE:lightcts> reference --scene ${imported} --out ${out}/imported && \
-${debian_python} ${gltf_dir}/check_same_images.py ${out}/builtin/reference.exr ${out}/imported/reference.exr \
+${LIGHTCTS_PYTHON3} ${gltf_dir}/check_same_images.py ${out}/builtin/reference.exr ${out}/imported/reference.exr \
 ${out}/builtin/tolerance.exr ${out}/imported/tolerance.exr")
   set_tests_properties(${test} PROPERTIES LABELS "gltf;reference"
     ENVIRONMENT "LIGHTCTS_CACHE_DIR=${CMAKE_BINARY_DIR}/cache")
@@ -33,7 +31,7 @@ ${out}/builtin/tolerance.exr ${out}/imported/tolerance.exr")
              COMMAND sh -c "mkdir -p ${out} && \
 $<TARGET_FILE:lightcts> render --scene ${builtin} --backend ${backend} ${driver_text} --out ${out}/builtin.exr || exit $?; \
 $<TARGET_FILE:lightcts> render --scene ${imported} --backend ${backend} ${driver_text} --out ${out}/imported.exr || exit $?; \
-${debian_python} ${gltf_dir}/check_same_images.py ${out}/builtin.exr ${out}/imported.exr")
+${LIGHTCTS_PYTHON3} ${gltf_dir}/check_same_images.py ${out}/builtin.exr ${out}/imported.exr")
     set_tests_properties(${test} PROPERTIES LABELS "gltf;${suffix}" SKIP_RETURN_CODE 3 TIMEOUT 300
       ENVIRONMENT "${backend_test_environment}" FAIL_REGULAR_EXPRESSION "Validation (Error|Warning)|VUID-")
   endforeach()
@@ -42,7 +40,7 @@ endforeach()
 # The checked-in models are exactly what the generator writes.
 add_test(NAME gltf.generated-models-are-current
          COMMAND sh -c "rm -rf ${gltf_out}/generated && \
-${debian_python} ${gltf_dir}/generate_models.py --out ${gltf_out}/generated && \
+${LIGHTCTS_PYTHON3} ${gltf_dir}/generate_models.py --out ${gltf_out}/generated && \
 diff -r ${gltf_out}/generated ${gltf_scenes}/models")
 set_tests_properties(gltf.generated-models-are-current PROPERTIES LABELS "gltf;unit")
 
@@ -50,7 +48,7 @@ set_tests_properties(gltf.generated-models-are-current PROPERTIES LABELS "gltf;u
 # broken ones exit 2 naming the file and the JSON path (exit 3: the package
 # is missing, a skip).
 add_test(NAME gltf.package-files-load-or-are-refused-with-their-path
-         COMMAND ${debian_python} ${gltf_dir}/check_package_files.py $<TARGET_FILE:lightcts>)
+         COMMAND ${LIGHTCTS_PYTHON3} ${gltf_dir}/check_package_files.py $<TARGET_FILE:lightcts>)
 set_tests_properties(gltf.package-files-load-or-are-refused-with-their-path PROPERTIES
   LABELS "gltf;cli" SKIP_RETURN_CODE 3 TIMEOUT 600)
 
@@ -59,7 +57,7 @@ set_tests_properties(gltf.package-files-load-or-are-refused-with-their-path PROP
 # probability (24/25)^200, 3e-4); `fuzz_gltf.py --count 1000` by hand goes
 # further (each lightcts process costs about half a second to start).
 add_test(NAME gltf.fuzzed-files-exit-0-2-or-3
-         COMMAND sh -c "rm -rf ${gltf_out}/fuzz && ${debian_python} ${gltf_dir}/fuzz_gltf.py \
+         COMMAND sh -c "rm -rf ${gltf_out}/fuzz && ${LIGHTCTS_PYTHON3} ${gltf_dir}/fuzz_gltf.py \
 --lightcts $<TARGET_FILE:lightcts> --seeds ${gltf_scenes}/models --out ${gltf_out}/fuzz --count 150 --seed 1 --jobs 2")
 set_tests_properties(gltf.fuzzed-files-exit-0-2-or-3 PROPERTIES LABELS "gltf;cli" TIMEOUT 900
   ENVIRONMENT "LIGHTCTS_CACHE_DIR=${CMAKE_BINARY_DIR}/cache")

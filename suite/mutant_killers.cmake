@@ -1,28 +1,18 @@
-# Reads the mutation check's one table (mutant_killers.def, which C++ includes
-# too) into `mutant_killers`: a list of "<mutant>=<group>/<name>.json,...",
-# the scene files relative to suite/scenes, so that ctest's mutants.* tests
-# check the same killers as `lightcts run`.
+# Reads the mutant names of the mutation check's one table (mutant_killers.def,
+# which C++ includes too, and whose killers `lightcts run --mutants-only`
+# checks) into `mutant_names`, so that ctest has a mutants.<mutant>.<backend>
+# test for every line of the table.
 set(mutant_killers_table ${CMAKE_CURRENT_LIST_DIR}/mutant_killers.def)
 set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${mutant_killers_table})
 file(STRINGS ${mutant_killers_table} mutant_killer_lines REGEX "^LIGHTCTS_MUTANT_KILLERS\\(")
-set(mutant_killers)
+set(mutant_names)
 foreach(line ${mutant_killer_lines})
   if(NOT line MATCHES "^LIGHTCTS_MUTANT_KILLERS\\(\"([a-z0-9-]+)\", *\"([a-z0-9. -]+)\"\\)$")
     message(FATAL_ERROR "${mutant_killers_table}: cannot read '${line}'")
   endif()
-  set(killer_mutant "${CMAKE_MATCH_1}")
-  string(REPLACE " " ";" killer_cases "${CMAKE_MATCH_2}")
-  set(killer_files)
-  foreach(killer_case ${killer_cases})
-    if(NOT killer_case MATCHES "^([a-z0-9-]+)\\.([a-z0-9-]+)$")
-      message(FATAL_ERROR "${mutant_killers_table}: '${killer_case}' of ${killer_mutant} is not <group>.<name>")
-    endif()
-    list(APPEND killer_files "${CMAKE_MATCH_1}/${CMAKE_MATCH_2}.json")
-  endforeach()
-  string(REPLACE ";" "," killer_files "${killer_files}")
-  list(APPEND mutant_killers "${killer_mutant}=${killer_files}")
+  list(APPEND mutant_names "${CMAKE_MATCH_1}")
 endforeach()
-list(LENGTH mutant_killers mutant_killer_count)
-if(mutant_killer_count EQUAL 0)
+list(LENGTH mutant_names mutant_count)
+if(mutant_count EQUAL 0)
   message(FATAL_ERROR "${mutant_killers_table}: no mutant")
 endif()

@@ -1,7 +1,6 @@
 # `lightcts run --jobs`, `--shard` and `lightcts merge` through the
 # real binary and real drivers (suite/parallel_outcome.cmake). Included by
 # scene_tests.cmake, which defines backend_test_environment.
-find_program(PYTHON3 python3 REQUIRED)  # scripts/setup.sh installs it (python3-scipy)
 set(parallel_out ${CMAKE_BINARY_DIR}/test-out/parallel)
 set(parallel_scenes ${CMAKE_CURRENT_SOURCE_DIR}/scenes/attenuation)
 set(parallel_crash attenuation.point-d-half-range.vulkan)
@@ -9,7 +8,7 @@ set(parallel_crash attenuation.point-d-half-range.vulkan)
 # name | mode | run arguments | environment
 function(add_parallel_test name mode args env)
   add_test(NAME run.${name}
-           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DPYTHON=${PYTHON3}
+           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DPYTHON=${LIGHTCTS_PYTHON3}
                    -DCHECK=${CMAKE_CURRENT_SOURCE_DIR}/check_same_results.py -DOUT=${parallel_out}/${name}
                    -DMODE=${mode} "-DARGS=${args}" "-DENV=${env}"
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/parallel_outcome.cmake)

@@ -112,9 +112,8 @@ set_tests_properties(run.real-run-report-images-load-in-chromium PROPERTIES LABE
 # the EXR files' floats at chosen pixels (read with OpenImageIO's Python
 # module), and the page must load nothing from the network
 # (reports/tests/viewer_probe_test.py; one browser for both).
-find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
 add_test(NAME run.real-run-report-viewer-probes-the-exr-values-with-no-network
-         COMMAND ${SYSTEM_PYTHON3} ${PROJECT_SOURCE_DIR}/reports/tests/viewer_probe_test.py --no-network
+         COMMAND ${LIGHTCTS_PYTHON3} ${PROJECT_SOURCE_DIR}/reports/tests/viewer_probe_test.py --no-network
                  --report ${run_out}/real-run-report/report/index.html)
 set_tests_properties(run.real-run-report-viewer-probes-the-exr-values-with-no-network
   PROPERTIES LABELS "run;report;vulkan" FIXTURES_REQUIRED real-run SKIP_RETURN_CODE 77 TIMEOUT 150)

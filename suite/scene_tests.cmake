@@ -97,11 +97,10 @@ endforeach()
 # LLVM); the scene tests above read its verdicts.
 # Vulkan validation is on, and a layer message fails the test it came in
 # (the worker reports it as a Crash). Label `scene-runs`.
-find_program(SYSTEM_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH REQUIRED)
 foreach(combination ${backend_combinations})
   split_combination(${combination})
   add_test(NAME scene-runs.${suffix}
-           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DPYTHON=${SYSTEM_PYTHON3}
+           COMMAND ${CMAKE_COMMAND} -DLIGHTCTS=$<TARGET_FILE:lightcts> -DPYTHON=${LIGHTCTS_PYTHON3}
                    -DSCENES=${CMAKE_CURRENT_SOURCE_DIR}/scenes -DCOMBINATION=${suffix} -DBACKEND=${backend} -DDRIVER=${driver}
                    -DOUT=${CMAKE_BINARY_DIR}/test-out/scene-runs/${suffix} -P ${CMAKE_CURRENT_SOURCE_DIR}/scene_run.cmake)
   # COST: started first (CMakeLists.txt says why); a hung driver is the
@@ -110,10 +109,12 @@ foreach(combination ${backend_combinations})
     ENVIRONMENT "${backend_test_environment}" TIMEOUT 1500 COST 60)
 endforeach()
 # A reference is computed by the first run that needs it and read from the
-# cache by every later one of the same precision (conformance/reference_cache.h);
-# two runs that start together would each compute it. So the runs wait for
-# the first of their precision on Debian's drivers: lavapipe's (8 sub-pixel
-# bits, as llvmpipe) and softpipe's on EGL (4, as SwiftShader and zink).
+# cache by every later one of the same precision; a run that needs one
+# another run is computing waits on the cache's lock
+# (conformance/reference_cache.h), holding a ctest slot idle. So, as a
+# scheduling choice, the runs start after the first of their precision on
+# Debian's drivers: lavapipe's (8 sub-pixel bits, as llvmpipe) and softpipe's
+# on EGL (4, as SwiftShader and zink), and ctest runs other tests meanwhile.
 # DEPENDS orders the runs without requiring the first: any one still runs alone.
 set_tests_properties(scene-runs.gl-egl scene-runs.gl-osmesa PROPERTIES DEPENDS scene-runs.vulkan)
 set_tests_properties(scene-runs.gl-osmesa-softpipe scene-runs.vulkan-swiftshader scene-runs.gl-egl-zink

@@ -1,8 +1,10 @@
 #!/bin/sh
-# One scene test of ctest (suite/scene_tests.cmake): the raw verdict its
+# One scene or mutant test of ctest (suite/scene_tests.cmake,
+# suite/mutant_tests.cmake): the raw verdict or mutant status its
 # combination's `lightcts run` gave it (suite/scene_run_verdicts.py wrote
 # VERDICTS/<test>.txt) must be WANT: Pass, or Fail for a test the drivers'
-# expected-failures files list (the known mismatch must still be detected).
+# expected-failures files list (the known mismatch must still be detected),
+# or `killed` for a mutant.
 #
 #   scene_verdict.sh VERDICTS TEST WANT
 #

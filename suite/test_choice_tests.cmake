@@ -58,14 +58,13 @@ endforeach()
 # A real run of a selection: results.json holds exactly the selected tests,
 # the selection as given, and each caselist and baseline with its SHA-256
 # (suite/check_test_choice.py computes the digests itself).
-find_program(PYTHON3 python3 REQUIRED)
 set(point_caselist ${CMAKE_CURRENT_BINARY_DIR}/point-caselist.txt)
 file(WRITE ${point_caselist} "attenuation.point-d-*.vulkan  # the point lights at d = 0 .. r\n")
 set(point_baseline ${CMAKE_CURRENT_BINARY_DIR}/point-baseline.txt)
 file(WRITE ${point_baseline} "# nothing expected to fail, listed only to be recorded\n")
 add_test(NAME run.choice-real-run-records-its-selection
          COMMAND ${CMAKE_COMMAND} -E env ${backend_test_environment}
-                 ${PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/check_test_choice.py $<TARGET_FILE:lightcts>
+                 ${LIGHTCTS_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/check_test_choice.py $<TARGET_FILE:lightcts>
                  ${choice_out}/real-run ${choice_scenes}/attenuation ${point_caselist} ${point_baseline})
 set_tests_properties(run.choice-real-run-records-its-selection PROPERTIES LABELS "run;choice;vulkan"
   SKIP_RETURN_CODE 77)

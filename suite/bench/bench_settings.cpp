@@ -28,7 +28,7 @@ std::string oneOf(const std::vector<std::string>& names) {
   return text;
 }
 
-// The drivers the combination table names (llvmpipe, softpipe), in table order.
+// The drivers the combination table names (llvmpipe, softpipe, swiftshader, zink), in table order.
 std::vector<std::string> tableDrivers() {
   std::vector<std::string> drivers;
   for (const backends::BackendCombination& c : backends::backendCombinations())

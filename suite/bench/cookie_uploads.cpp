@@ -12,7 +12,7 @@
 namespace bench {
 
 std::vector<int> cookieUploadSizes(bool quick) {
-  if (quick) return {256};  // --quick, and a slow driver (softpipe's share of the budget)
+  if (quick) return {256};  // --quick, and a slow driver (its share of the budget)
   return {64, 256, 1024};
 }
 

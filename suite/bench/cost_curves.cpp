@@ -32,15 +32,15 @@ std::string sizeName(int width, int height) { return std::to_string(width) + "x"
 void registerCurves(Registrar& r) {
   const RunState& run = r.run();
   const bool quick = run.settings.quick;
-  // A slow driver's full set has no curves (softpipe's share of
-  // the full bench's 10 minutes): how a reference rasterizer's time grows
+  // A slow driver's full set has no curves (its share of the full
+  // bench's 10 minutes): how a reference rasterizer's time grows
   // with lights, objects and pixels tells a reader nothing about a renderer,
   // and its field modes keep its errors. Its --quick run still draws each.
   if (run.slow() && !quick) return;
   // The light and object curves at 640x360 (a quarter of the field's
   // pixels, to fit the time budget), at 256x144 with --quick (a smoke run:
   // that every curve draws, not what it costs) and at 128x72 with --quick
-  // on a slow driver (a softpipe frame cost about a second at 256x144).
+  // on a slow driver, whose frames are slow even at 256x144.
   const bool tiny = run.slow();  // and so --quick
   const bool small = quick && !tiny;
   const int curveWidth = tiny ? 128 : small ? 256 : 640, curveHeight = tiny ? 72 : small ? 144 : 360;

@@ -3,10 +3,9 @@
 # device time at least half its wall time, and then the entry's time is the
 # device's) or flagged (device_time_flagged, a label beginning "wall time",
 # and the entry's time is the wall time, never the device's). llvmpipe's
-# GL_TIME_ELAPSED misses most of a light frame (14 us of 43 ms for one light
-# on this field), so the one-light entries must be flagged; how much of the
-# 64-light frame it covers varies with the machine's load (7.8 of 14.3 ms on
-# a loaded 2-core machine), so that entry is held to the rule, whichever
+# GL_TIME_ELAPSED misses most of a light frame, so the one-light entries must
+# be flagged; how much of the 64-light frame it covers varies with the
+# machine's load, so that entry is held to the rule, whichever
 # side it falls on. (--quick runs one repetition of one iteration; were there
 # more, a repetition after a flagged one is wall-timed too, with
 # device_time_flagged 0 and a label that says why.)
@@ -18,7 +17,7 @@ run_render_bench("^frame/gl-egl/curve-lights/all-lights/(1|64)(/|$)" --time_sour
 # Whether |a - b| <= 1 % of b, or a >= b * share: evaluated in Python (CMake
 # has no floating point).
 function(holds expression a b out)
-  execute_process(COMMAND /usr/bin/python3 -c
+  execute_process(COMMAND ${PYTHON} -c
     "import sys; a, b = float(sys.argv[1]), float(sys.argv[2]); sys.exit(0 if (${expression}) else 1)" ${a} ${b}
     RESULT_VARIABLE status)
   if(status EQUAL 0)

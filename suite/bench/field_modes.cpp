@@ -58,10 +58,10 @@ bool isLightPathMode(const std::string& mode) {
 
 }  // namespace
 
-// A slow driver draws the field at 160x90 in its full set too (the full
-// bench's budget: at 320x180 a softpipe feature frame takes 3 to 4 s, and its modes
-// would take 90 s of a 650 s full bench); its error is still measured on every
-// mode, its speed is a reference rasterizer's.
+// A slow driver (by measured speed, driver_speed.h) draws the field at
+// 160x90 in its full set too: the full bench's budget has no room for its
+// feature frames at a larger size. Its error is still measured on every
+// mode; its speed is a reference rasterizer's.
 FieldSize fieldSize(const RunState& run) {
   if (run.settings.fieldWidth > 0) return {run.settings.fieldWidth, run.settings.fieldHeight};
   if (run.slow()) return {160, 90};
@@ -111,8 +111,8 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
         modeOf(FrameMode::PerObject, true, modeName(FrameMode::PerObject) + "-" + specular + "-full-shader", true));
   }
   // Cookies on and off: the pair in the full set (bench.cookie-smoke runs it
-  // filtered); --quick leaves it out, one cookie frame costing about a
-  // second on lavapipe and tens on softpipe (docs/performance.md).
+  // filtered); --quick leaves it out, a cookie frame being among the
+  // slowest of every driver.
   if (!quick) {
     modes.push_back(modeOf(FrameMode::AllLights, false, kCookieLightsMode));
     modes.back().field.cookieLights = true;
@@ -131,9 +131,8 @@ std::vector<FieldModeSpec> fieldModeSpecs(bool quick, bool slow, bool lightPaths
         if (filter != ShadowFilter::Hard && std::ranges::find(kFilteredShadowResolutions, resolution) ==
                                                 std::end(kFilteredShadowResolutions))
           continue;
-        // A slow driver (softpipe's share of the budget): one
-        // mode, bilinear at 256 (a shadowed softpipe frame takes 4 s even
-        // at 320x180).
+        // A slow driver (its share of the budget): one mode, bilinear at
+        // 256, a shadowed frame being slow even at 320x180.
         if (slow && (resolution != 256 || filter != ShadowFilter::Bilinear)) continue;
         modes.push_back(modeOf(FrameMode::AllLights, false, shadowModeName(filter, resolution)));
         modes.back().field.shadows = true;
