@@ -10,7 +10,9 @@
 // 2^-23 |x| (ulpRelative), twice float32's unit roundoff.
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace reference {
 
@@ -40,9 +42,10 @@ constexpr double kUlpRelative = 0x1p-23;
 inline double ulpAt(double magnitude) {
   if (!(magnitude < 0x1p128)) return magnitude;  // infinity or NaN carries through
   if (magnitude < 0x1p-126) return 0x1p-149;
-  int exponent = 0;
-  std::frexp(magnitude, &exponent);  // magnitude in [2^(exponent-1), 2^exponent)
-  return std::ldexp(1.0, exponent - 24);
+  // 2^e is magnitude's exponent bits alone (a normal double); read from the
+  // bits, since frexp and ldexp are library calls on the reference's hottest path.
+  const double power = std::bit_cast<double>(std::bit_cast<std::uint64_t>(magnitude) & 0x7ff0000000000000u);
+  return power * 0x1p-23;
 }
 
 }  // namespace reference

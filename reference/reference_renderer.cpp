@@ -523,7 +523,7 @@ ReferenceImages ReferenceRenderer::render(const Frame& frame, const ReferenceOpt
         const Ray ray = frame.view.rayThroughPixel(cx, cy);
         if (shading.depthIsAmbiguous(ray, *hits[k]) || shading.nearOpenEdge(*hits[k], cx, cy, edgeDistance))
           compared = false;
-        const Shaded centre = shading.shade(*hits[k]);
+        const Shaded centre = shading.shade(*hits[k], !options.valueOnly);
         rowEvaluations += centre.evaluations;
         value = centre.value;
         if (options.keepLightPart)

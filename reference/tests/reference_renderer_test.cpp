@@ -174,14 +174,24 @@ TEST(ReferenceRenderer, IdealIgnoresTheBudget) {
 }
 
 // The benchmarks' baseline (valueOnly): the same value and mask, bit for bit,
-// as a full ideal render, with silhouettes (masked by the traced shifts) and
-// 65 lights in view, no tolerance, and one shading a pixel instead of five.
+// as a full ideal render, with silhouettes (masked by the traced shifts), 65
+// point lights, a shadowed spot and a directional light in view, no
+// tolerance, and one shading a pixel, without its bound, instead of five.
 TEST(ReferenceRenderer, ValueOnlyKeepsValueAndMaskBitForBit) {
   Scene s = smallScene();
   s.image = {40, 40};
   s.objects.push_back(plane(20));
   s.objects.push_back(plane(2, {0.125, 0.3, 0}));  // silhouettes over the floor
   for (int k = 0; k < 65; ++k) s.lights.push_back(pointLightAt({-3 + 0.1 * (k % 8), 1 + 0.05 * (k / 8), -3 + 0.1 * (k / 8)}, 6));
+  Light spot;  // the spot and directional terms, and a shadow of the small plane
+  spot.position = {0.5, 3, 0.2};
+  spot.shadows = true;
+  s.lights.push_back(spot);
+  Light sun;
+  sun.type = LightType::Directional;
+  sun.direction = glm::normalize(Vec3(0.3, -1, 0.2));
+  sun.intensity = 0.5;
+  s.lights.push_back(sun);
   auto prepared = prepareScene(s);
   const ReferenceRenderer renderer(prepared);
   const Frame frame = prepareFrame(prepared, 0);

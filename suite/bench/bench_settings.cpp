@@ -1,5 +1,6 @@
 #include "suite/bench/bench_settings.h"
 
+#include "app/exit_status.h"
 #include "backends/backend.h"
 
 #include <algorithm>
@@ -12,7 +13,7 @@
 namespace bench {
 namespace {
 
-constexpr int kExitBadInput = 2;
+using app::kExitBadInput;  // as the lightcts command (SPEC 8)
 
 bool startsWith(std::string_view a, std::string_view prefix, std::string_view& value) {
   if (!a.starts_with(prefix)) return false;

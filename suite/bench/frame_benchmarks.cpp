@@ -35,6 +35,8 @@
 // (bench_reporters).
 #include "suite/bench/frame_benchmarks.h"
 
+#include "app/exit_status.h"
+
 #include "suite/bench/bench_families.h"
 #include "suite/bench/bench_registrar.h"
 #include "suite/bench/bench_reporters.h"
@@ -59,7 +61,8 @@
 namespace bench {
 namespace {
 
-constexpr int kExitSuccess = 0, kExitBadInput = 2, kExitNotSupported = 3, kExitInternalError = 4;
+// render_bench exits as the lightcts command does (SPEC 8).
+using app::kExitBadInput, app::kExitInternalError, app::kExitNotSupported, app::kExitSuccess;
 
 void addDeviceContext(const RunState& run) {
   const backends::DeviceInfo info = run.specialised->device();
