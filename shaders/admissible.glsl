@@ -5,7 +5,9 @@
 // pipeline uses, has LIGHTCTS_ADMISSIBLE_VARIANTS 0, so each function is the
 // plain operation and no variant's code is in its SPIR-V (SwiftShader compiles
 // what a specialization constant would switch off: five times the pipeline
-// time); the variants' build has the code, chosen by the ADMISSIBLE constant.
+// time); the variants' build has the code, chosen by the ADMISSIBLE constant
+// (a Vulkan variant pipeline gets it with that choice folded in,
+// shaders/spirv_constant_folding.h).
 //
 // shaders/light_terms.glsl calls these by name, and the reference
 // (reference/light_terms.h) gives the same names its own meanings: the

@@ -3,8 +3,11 @@
 #include "backends/vulkan/forward_pipeline.h"
 #include "backends/vulkan/raster_translation.h"
 #include "backends/vulkan/scene_geometry.h"
+#include "shaders/spirv_constant_folding.h"
 
 #include <array>
+#include <optional>
+#include <vector>
 
 namespace backends::vulkan {
 namespace {
@@ -30,26 +33,47 @@ vk::raii::ShaderModule shaderModule(const vk::raii::Device& device, std::span<co
                                 vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(), .pCode = spirv.data()});
 }
 
+// `stage` as a pipeline with `constants` runs it when those choose one of
+// lightcts's own deliberate implementations, an admissible variant or a
+// mutant: its build with that choice folded in; empty for every other
+// pipeline, which runs the model's build as it is.
+std::optional<vk::raii::ShaderModule> chosenImplementationModule(const vk::raii::Device& device, shaders::Stage stage,
+                                                                 const shaders::ConstantValues& constants) {
+  const shaders::ShaderBuild build = shaders::shaderBuildOf(constants);
+  const bool mutant = constants[shaders::kMutant] != 0;
+  if (build == shaders::ShaderBuild::Model && !mutant) return std::nullopt;
+  const std::span<const std::uint32_t> spirv = shaders::spirv(stage, build);
+  std::vector<std::uint32_t> folded(spirv.begin(), spirv.end());
+  if (build == shaders::ShaderBuild::AdmissibleVariants)
+    folded = shaders::withConstantComparisonsFolded(folded, shaders::kAdmissible, constants[shaders::kAdmissible]);
+  if (mutant) folded = shaders::withConstantComparisonsFolded(folded, shaders::kMutant, constants[shaders::kMutant]);
+  return shaderModule(device, folded);
+}
+
 }  // namespace
 
 ShaderStages::ShaderStages(const vk::raii::Device& device, shaders::Stage vertexStage, shaders::Stage fragmentStage)
-    : vertex(shaderModule(device, shaders::spirv(vertexStage, shaders::ShaderBuild::Model))),
-      fragment(shaderModule(device, shaders::spirv(fragmentStage, shaders::ShaderBuild::Model))),
-      variantsVertex(shaderModule(device, shaders::spirv(vertexStage, shaders::ShaderBuild::AdmissibleVariants))),
-      variantsFragment(shaderModule(device, shaders::spirv(fragmentStage, shaders::ShaderBuild::AdmissibleVariants))) {}
+    : vertexStage(vertexStage),
+      fragmentStage(fragmentStage),
+      vertex(shaderModule(device, shaders::spirv(vertexStage, shaders::ShaderBuild::Model))),
+      fragment(shaderModule(device, shaders::spirv(fragmentStage, shaders::ShaderBuild::Model))) {}
 
 vk::raii::Pipeline PipelineBuilder::build(const vk::raii::PipelineLayout& layout, const ShaderStages& shaderStages,
                                           const shaders::ConstantValues& constants,
                                           const PassPipelineState& pass) const {
   const Specialization specialization(constants);
-  const bool variants = shaders::shaderBuildOf(constants) == shaders::ShaderBuild::AdmissibleVariants;
+  // Made for this pipeline alone: a module may go once its pipelines are made.
+  const std::optional<vk::raii::ShaderModule> chosenVertex =
+      chosenImplementationModule(device_.device, shaderStages.vertexStage, constants);
+  const std::optional<vk::raii::ShaderModule> chosenFragment =
+      chosenImplementationModule(device_.device, shaderStages.fragmentStage, constants);
   const std::array<vk::PipelineShaderStageCreateInfo, 2> stages{{
       {.stage = vk::ShaderStageFlagBits::eVertex,
-       .module = variants ? *shaderStages.variantsVertex : *shaderStages.vertex,
+       .module = chosenVertex ? **chosenVertex : *shaderStages.vertex,
        .pName = "main",
        .pSpecializationInfo = &specialization.info},
       {.stage = vk::ShaderStageFlagBits::eFragment,
-       .module = variants ? *shaderStages.variantsFragment : *shaderStages.fragment,
+       .module = chosenFragment ? **chosenFragment : *shaderStages.fragment,
        .pName = "main",
        .pSpecializationInfo = &specialization.info},
   }};

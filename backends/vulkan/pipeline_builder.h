@@ -20,13 +20,16 @@
 namespace backends::vulkan {
 
 // A pass's vertex and fragment shader modules, from embedded SPIR-V.
-// A vertex and a fragment stage, each in both builds (shaders/embedded_spirv.h):
-// a pipeline takes the build its constants ask for (shaders::shaderBuildOf).
+// A vertex and a fragment stage (shaders/embedded_spirv.h): a pipeline takes
+// the build its constants ask for (shaders::shaderBuildOf). The model's build
+// is made into modules once; the pipeline of an admissible variant or a
+// mutant gets modules of its build with that choice folded in
+// (shaders/spirv_constant_folding.h), made when the pipeline is.
 struct ShaderStages {
   ShaderStages(const vk::raii::Device& device, shaders::Stage vertexStage, shaders::Stage fragmentStage);
 
-  vk::raii::ShaderModule vertex, fragment;                    // the model's build
-  vk::raii::ShaderModule variantsVertex, variantsFragment;    // the admissible variants' build
+  shaders::Stage vertexStage, fragmentStage;
+  vk::raii::ShaderModule vertex, fragment;  // the model's build
 };
 
 struct PassPipelineState {
