@@ -7,7 +7,7 @@ measurement (scripts/measure.py writes them: figure, date, commit, machine,
 load, command, and the suite's size where the figure depends on it), and
 docs/performance.md, the bench's own page, whose every section that states
 a time names its date. Elsewhere a time is quoted through a link to its
-record, `[12.0 minutes](measurements.md#fresh-clone-2)`, or not at all.
+record, `[7.9 minutes](measurements.md#fresh-clone-6)`, or not at all.
 
 The check fails when
 - a record lacks a field, or its date is not YYYY-MM-DD;

@@ -16,7 +16,7 @@ two-column table of fields:
     ...
 
 Prose elsewhere quotes a record through a link to its anchor,
-`[N minutes](measurements.md#fresh-clone-2)`, and the check holds every
+`[N minutes](measurements.md#fresh-clone-6)`, and the check holds every
 number of the link's text to the record's figure.
 """
 import re

@@ -37,10 +37,11 @@ struct Float32Precision {
 // One ULP of a normal float32 x, relative: at most 2^-23 |x|.
 constexpr double kUlpRelative = 0x1p-23;
 
-// Vulkan's ulp(x): the gap between the two floats around x, 2^(e - 23) for
-// |x| in [2^e, 2^(e+1)), 2^-149 below the normals; infinite past the floats.
+// Vulkan's ulp(x) at a magnitude |x| >= 0: the gap between the two floats
+// around x, 2^(e - 23) for |x| in [2^e, 2^(e+1)), 2^-149 below the normals;
+// past the floats (2^128 and up, infinity) and for NaN the magnitude itself.
 inline double ulpAt(double magnitude) {
-  if (!(magnitude < 0x1p128)) return magnitude;  // infinity or NaN carries through
+  if (!(magnitude < 0x1p128)) return magnitude;
   if (magnitude < 0x1p-126) return 0x1p-149;
   // 2^e is magnitude's exponent bits alone (a normal double); read from the
   // bits, since frexp and ldexp are library calls on the reference's hottest path.

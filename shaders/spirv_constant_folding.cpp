@@ -11,7 +11,9 @@ namespace {
 
 // SPIR-V 1.x, section 3: opcodes and the one decoration read here.
 constexpr std::uint32_t kOpTypeInt = 21, kOpConstantTrue = 41, kOpConstantFalse = 42, kOpConstant = 43,
-                        kOpSpecConstantOp = 52, kOpDecorate = 71, kOpIEqual = 170, kOpINotEqual = 171;
+                        kOpSpecConstantOp = 52, kOpDecorate = 71, kOpLogicalEqual = 164, kOpLogicalNotEqual = 165,
+                        kOpLogicalOr = 166, kOpLogicalAnd = 167, kOpLogicalNot = 168, kOpIEqual = 170,
+                        kOpINotEqual = 171;
 constexpr std::uint32_t kDecorationSpecId = 1;
 constexpr std::size_t kHeaderWords = 5;
 
@@ -48,17 +50,41 @@ std::vector<std::uint32_t> withConstantComparisonsFolded(std::span<const std::ui
       int32Constants[i.words[2]] = std::int32_t(i.words[3]);
   });
   std::vector<std::uint32_t> out(spirv.begin(), spirv.begin() + std::min(spirv.size(), kHeaderWords));
+  std::map<std::uint32_t, bool> folded;  // result id -> its value, for the comparisons folded so far
+  const auto emitConstant = [&](const Instruction& i, bool result) {
+    out.insert(out.end(), {(3u << 16) | (result ? kOpConstantTrue : kOpConstantFalse), i.words[1], i.words[2]});
+    folded[i.words[2]] = result;
+  };
   forEachInstruction(spirv, [&](const Instruction& i) {
     // OpSpecConstantOp: result type, result id, the operation, its operands.
+    // SPIR-V declares an id before its uses, so an operand folded is folded
+    // before the instruction that uses it is read.
+    const std::uint32_t operation = i.words.size() >= 5 ? i.words[3] : 0;
     if (constantId && i.opcode == kOpSpecConstantOp && i.words.size() == 6 &&
-        (i.words[3] == kOpIEqual || i.words[3] == kOpINotEqual)) {
+        (operation == kOpIEqual || operation == kOpINotEqual)) {
       const std::uint32_t a = i.words[4], b = i.words[5];
       const std::uint32_t other = a == *constantId ? b : b == *constantId ? a : 0;
       if (const auto literal = int32Constants.find(other); other != 0 && literal != int32Constants.end()) {
         const bool equal = literal->second == value;
-        const bool result = i.words[3] == kOpIEqual ? equal : !equal;
-        out.insert(out.end(), {(3u << 16) | (result ? kOpConstantTrue : kOpConstantFalse), i.words[1], i.words[2]});
+        emitConstant(i, operation == kOpIEqual ? equal : !equal);
         return;
+      }
+    }
+    // A logical operation on comparisons folded above (`ADMISSIBLE == A ||
+    // ADMISSIBLE == B`) is constant too; one with any other operand is not.
+    if (i.opcode == kOpSpecConstantOp && i.words.size() == 5 && operation == kOpLogicalNot &&
+        folded.count(i.words[4])) {
+      emitConstant(i, !folded[i.words[4]]);
+      return;
+    }
+    if (i.opcode == kOpSpecConstantOp && i.words.size() == 6 && folded.count(i.words[4]) && folded.count(i.words[5])) {
+      const bool a = folded[i.words[4]], b = folded[i.words[5]];
+      switch (operation) {
+        case kOpLogicalOr: emitConstant(i, a || b); return;
+        case kOpLogicalAnd: emitConstant(i, a && b); return;
+        case kOpLogicalEqual: emitConstant(i, a == b); return;
+        case kOpLogicalNotEqual: emitConstant(i, a != b); return;
+        default: break;
       }
     }
     out.insert(out.end(), i.words.begin(), i.words.end());

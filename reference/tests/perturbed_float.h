@@ -51,7 +51,8 @@ inline Perturbation*& current() {
   return active;
 }
 
-// The gap between the floats around x (Vulkan's ulp(x)).
+// The gap between the floats around x (Vulkan's ulp(x)), written apart from
+// reference::ulpAt, which the bounds under test use.
 inline double ulpOf(double x) {
   const double a = std::abs(x);
   if (a < 0x1p-126) return 0x1p-149;

@@ -27,7 +27,7 @@ TEST(UlpAt, IsTheDenormalStepBelowTheNormals) {
   EXPECT_EQ(ulpAt(0.0), 0x1p-149);
 }
 
-TEST(UlpAt, CarriesInfinityAndNaNThrough) {
+TEST(UlpAt, IsTheMagnitudeItselfPastTheFloatsAndForNaN) {
   EXPECT_EQ(ulpAt(std::numeric_limits<double>::infinity()), std::numeric_limits<double>::infinity());
   EXPECT_EQ(ulpAt(0x1p128), 0x1p128);
   EXPECT_TRUE(std::isnan(ulpAt(std::numeric_limits<double>::quiet_NaN())));

@@ -1,8 +1,9 @@
 // withConstantComparisonsFolded on a module written word by word (SPIR-V 1.0,
 // section 3: an instruction's first word is its word count << 16 | opcode):
 // the comparisons of the chosen specialization constant with an integer
-// constant become OpConstantTrue or OpConstantFalse, whichever side the
-// constant is on; every other instruction stays as it was.
+// constant, whichever side the constant is on, and logical operations of
+// those alone become OpConstantTrue or OpConstantFalse; every other
+// instruction stays as it was.
 #include "shaders/spirv_constant_folding.h"
 
 #include <gtest/gtest.h>
@@ -20,7 +21,8 @@ constexpr std::uint32_t op(std::uint32_t words, std::uint32_t opcode) { return w
 
 // Opcodes: OpTypeBool 20, OpTypeInt 21, OpConstantTrue 41, OpConstantFalse 42,
 // OpConstant 43, OpSpecConstant 50, OpSpecConstantOp 52, OpDecorate 71;
-// operations IEqual 170, INotEqual 171, LogicalNot 168; decoration SpecId 1.
+// operations LogicalOr 166, LogicalAnd 167, LogicalNot 168, IEqual 170,
+// INotEqual 171; decoration SpecId 1.
 const Words kHeader = {0x07230203u, 0x00010000u, 0, 20, 0};
 const Words kDeclarations = {
     op(4, 71), 5, 1, 22,  // OpDecorate %5 SpecId 22: the constant folded
@@ -32,9 +34,11 @@ const Words kDeclarations = {
     op(4, 43), 3, 6, 4,   // %6 = OpConstant %3 4
     op(4, 43), 3, 7, 5,   // %7 = OpConstant %3 5
 };
+// Read after the comparisons: another constant's comparison, and a logical
+// operation that reads it as well as a folded one, stay as they are.
 const Words kUntouched = {
-    op(5, 52), 2, 11, 168, 8,    // %11 = OpSpecConstantOp LogicalNot %8
     op(6, 52), 2, 13, 170, 12, 6,  // %13 = OpSpecConstantOp IEqual %12 %6: another constant's
+    op(6, 52), 2, 14, 167, 8, 13,  // %14 = OpSpecConstantOp LogicalAnd %8 %13
 };
 
 Words module(const Words& comparisons) {
@@ -46,16 +50,20 @@ Words module(const Words& comparisons) {
 }
 
 const Words kComparisons = {
-    op(6, 52), 2, 8, 170, 5, 6,   // %8 = %5 == 4
-    op(6, 52), 2, 9, 170, 7, 5,   // %9 = 5 == %5
-    op(6, 52), 2, 10, 171, 5, 6,  // %10 = %5 != 4
+    op(6, 52), 2, 8, 170, 5, 6,    // %8 = %5 == 4
+    op(6, 52), 2, 9, 170, 7, 5,    // %9 = 5 == %5
+    op(6, 52), 2, 10, 171, 5, 6,   // %10 = %5 != 4
+    op(5, 52), 2, 11, 168, 8,      // %11 = !%8
+    op(6, 52), 2, 15, 166, 8, 9,   // %15 = %8 || %9
 };
 
 TEST(SpirvConstantFolding, ComparisonsWithTheConstantBecomeTrueOrFalse) {
-  const Words whenFour = {op(3, 41), 2, 8, op(3, 42), 2, 9, op(3, 42), 2, 10};
+  const Words whenFour = {op(3, 41), 2, 8, op(3, 42), 2, 9, op(3, 42), 2, 10, op(3, 42), 2, 11, op(3, 41), 2, 15};
   EXPECT_EQ(withConstantComparisonsFolded(module(kComparisons), 22, 4), module(whenFour));
-  const Words whenFive = {op(3, 42), 2, 8, op(3, 41), 2, 9, op(3, 41), 2, 10};
+  const Words whenFive = {op(3, 42), 2, 8, op(3, 41), 2, 9, op(3, 41), 2, 10, op(3, 41), 2, 11, op(3, 41), 2, 15};
   EXPECT_EQ(withConstantComparisonsFolded(module(kComparisons), 22, 5), module(whenFive));
+  const Words whenSix = {op(3, 42), 2, 8, op(3, 42), 2, 9, op(3, 41), 2, 10, op(3, 41), 2, 11, op(3, 42), 2, 15};
+  EXPECT_EQ(withConstantComparisonsFolded(module(kComparisons), 22, 6), module(whenSix));
 }
 
 TEST(SpirvConstantFolding, AModuleWithoutTheConstantIsUnchanged) {

@@ -23,6 +23,7 @@
 // `<family>_RMS`), so the JSON says whether the cost is near-linear.
 #include "suite/bench/prepare_benchmarks.h"
 
+#include "app/exit_status.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
 #include "lighting/gpu_packing.h"
@@ -268,7 +269,7 @@ int runPrepareBenchmarks(int argc, char** argv) {
     registered = true;
   }
   benchmark::Initialize(&count, args.data());
-  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 2;
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return app::kExitBadInput;
   benchmark::AddCustomContext("prepare_bench.set", settings.quick ? "quick" : "full");
   benchmark::RunSpecifiedBenchmarks(reporters.display.get(), reporters.file.get());
   benchmark::Shutdown();
