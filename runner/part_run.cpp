@@ -3,6 +3,7 @@
 #include "comparison/verdict.h"
 #include "imaging/atomic_file.h"
 #include "runner/worker_process.h"
+#include "runner/worker_protocol.h"
 
 #include <fstream>
 #include <sstream>
@@ -107,21 +108,22 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
       try {
         event = Json::parse(line);
       } catch (const Json::parse_error&) {
-        continue;  // a driver that prints on stdout; the protocol lines are JSON
+        continue;  // a driver that prints on stdout; the protocol lines are JSON objects
       }
-      const std::string kind = event.value("kind", "");
-      if (kind == "device") {
-        outcome.device = event["device"];
+      if (!event.is_object()) continue;
+      const std::string kind = event.value(protocol::kKind, "");
+      if (kind == protocol::kDevice) {
+        outcome.device = event.value(protocol::kDeviceField, Json());
         backendUp = true;
         if (callbacks.backendUp) callbacks.backendUp();
-      } else if (kind == "backend_error" && next < plan.tasks.size() && !plan.tasks[next].isModelTest()) {
+      } else if (kind == protocol::kBackendError && next < plan.tasks.size() && !plan.tasks[next].isModelTest()) {
         // A mutant's or an admissible variant's backend that could not be
         // built (its shaders, its pipelines; the model's ran in the
         // combination's first part): the combination is in error and that
         // variant's tasks crashed; a fresh worker takes the next variant
         // packed into this part, whose verdicts stay its own.
         outcome.status = BackendStatus::Error;
-        outcome.message = event.value("message", "");
+        outcome.message = event.value(protocol::kMessage, "");
         const WorkerTask failed = plan.tasks[next];
         const std::string which = failed.isMutantTask()
                                       ? "mutant " + std::string(shaders::mutantName(failed.mutant))
@@ -130,17 +132,17 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
           record(plan.tasks[next],
                  abnormalResult(plan.tasks[next], Verdict::Crash, which + ": backend error: " + outcome.message));
         break;
-      } else if (kind == "backend_unavailable" || kind == "backend_error") {
+      } else if (kind == protocol::kBackendUnavailable || kind == protocol::kBackendError) {
         // A backend that ran before and is gone now is an error, not a skip.
-        const bool skip = kind == "backend_unavailable" && outcome.device.is_null();
+        const bool skip = kind == protocol::kBackendUnavailable && outcome.device.is_null();
         outcome.status = skip ? BackendStatus::NotSupported : BackendStatus::Error;
-        outcome.message = event.value("message", "");
+        outcome.message = event.value(protocol::kMessage, "");
         const Verdict verdict = skip ? Verdict::NotSupported : Verdict::Crash;
         for (; next < plan.tasks.size(); ++next)
           record(plan.tasks[next], abnormalResult(plan.tasks[next], verdict, outcome.message));
         stop = true;
         break;
-      } else if (kind == "result" && event.value("index", -1) == int(next)) {
+      } else if (kind == protocol::kResult && event.value(protocol::kIndex, -1) == int(next)) {
         record(plan.tasks[next], results::TaskResult::fromJson(event));
         ++next;
         gotResult = true;

@@ -6,6 +6,7 @@
 #include "comparison/verdict.h"
 #include "conformance/scene_check.h"
 #include "results/run_records.h"
+#include "runner/worker_protocol.h"
 #include "scene_input/scene_loader.h"
 
 #include <csignal>
@@ -147,9 +148,10 @@ class Worker {
   }
 
  private:
-  // The protocol's "result" line: the task's index in the plan and its result.
+  // The protocol's result line (runner/worker_protocol.h): the task's index in
+  // the plan and its result.
   void emitResult(int index, const results::TaskResult& result) {
-    Json line = {{"kind", "result"}, {"index", index}};
+    Json line = {{protocol::kKind, protocol::kResult}, {protocol::kIndex, index}};
     line.update(result.toJson());
     emit(out_, line);
   }
@@ -180,14 +182,15 @@ class Worker {
       const backends::DeviceInfo device = backend_->device();
       backends::requireExpectedDriver(device, plan_.expectDriver);
       backendShaders_ = task;
-      if (!announced_) emit(out_, {{"kind", "device"}, {"device", deviceJson(device)}});
+      if (!announced_)
+        emit(out_, {{protocol::kKind, protocol::kDevice}, {protocol::kDeviceField, deviceJson(device)}});
       announced_ = true;
       return 0;
     } catch (const backends::NotSupportedError& e) {
-      emit(out_, {{"kind", "backend_unavailable"}, {"message", e.what()}});
+      emit(out_, {{protocol::kKind, protocol::kBackendUnavailable}, {protocol::kMessage, e.what()}});
       return 3;
     } catch (const std::exception& e) {
-      emit(out_, {{"kind", "backend_error"}, {"message", e.what()}});
+      emit(out_, {{protocol::kKind, protocol::kBackendError}, {protocol::kMessage, e.what()}});
       return 4;
     }
   }
