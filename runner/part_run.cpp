@@ -1,5 +1,6 @@
 #include "runner/part_run.h"
 
+#include "app/exit_status.h"
 #include "comparison/verdict.h"
 #include "imaging/atomic_file.h"
 #include "runner/worker_process.h"
@@ -91,9 +92,9 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
       }
       if (status == WorkerProcess::ReadStatus::Closed) {
         const std::string how = worker.finish(false);
-        // Status 4 after a test's result: the worker reported a driver error
-        // and quit, so that a new one starts on a fresh device. No test is lost.
-        if (worker.exitStatus() == 4 && gotResult) break;
+        // An internal error after a test's result: the worker reported a driver
+        // error and quit, so that a new one starts on a fresh device. No test is lost.
+        if (worker.exitStatus() == app::kExitInternalError && gotResult) break;
         if (next < plan.tasks.size()) {
           const WorkerTask& task = plan.tasks[next];
           record(task, abnormalResult(task, Verdict::Crash,

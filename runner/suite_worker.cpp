@@ -1,5 +1,6 @@
 #include "runner/suite_worker.h"
 
+#include "app/exit_status.h"
 #include "backends/expected_driver.h"
 #include "baking/bake.h"
 #include "comparison/comparison_report.h"
@@ -137,7 +138,7 @@ class Worker {
         result.rawVerdict = comparison::Verdict::Crash;
         result.message = std::string("driver error: ") + e.what();
         emitResult(i, result);
-        return 4;
+        return app::kExitInternalError;
       } catch (const std::exception& e) {
         result.rawVerdict = comparison::Verdict::Crash;
         result.message = std::string("internal error: ") + e.what();
@@ -188,10 +189,10 @@ class Worker {
       return 0;
     } catch (const backends::NotSupportedError& e) {
       emit(out_, {{protocol::kKind, protocol::kBackendUnavailable}, {protocol::kMessage, e.what()}});
-      return 3;
+      return app::kExitNotSupported;
     } catch (const std::exception& e) {
       emit(out_, {{protocol::kKind, protocol::kBackendError}, {protocol::kMessage, e.what()}});
-      return 4;
+      return app::kExitInternalError;
     }
   }
 

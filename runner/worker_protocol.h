@@ -5,8 +5,9 @@
 // output and is skipped.
 //   {"kind": "device", "device": {...}}               the backend is up (once)
 //   {"kind": "result", "index": i, ...}               task i's result (results::TaskResult)
-//   {"kind": "backend_unavailable", "message": "..."} the backend is not here
-//   {"kind": "backend_error", "message": "..."}       the backend could not be built
+//   {"kind": "backend_unavailable", "message": "..."} the backend is not here: NotSupported, the run skips the rest
+//   {"kind": "backend_error", "message": "..."}       the backend could not be built (driver error,
+//                                                     --expect-driver mismatch)
 #pragma once
 
 #include <string_view>

@@ -105,7 +105,7 @@ def main():
             t0 = time.monotonic()
             process = subprocess.Popen(['bash', '-c', command], cwd=args.directory, stdout=subprocess.PIPE,
                                        stderr=subprocess.STDOUT, text=True)
-            tests, skipped, labels = None, 0, []  # ctest's, of the last repetition
+            tests, skipped, step_labels = None, 0, []  # ctest's, of the last repetition
             for line in process.stdout:  # shown as it comes; ctest's summary lines are kept
                 sys.stdout.write(line)
                 skipped += '***Skipped' in line  # ctest counts a skip among the "tests passed"
@@ -115,9 +115,11 @@ def main():
                     tests = f'{total - failed - skipped} of {total} tests passed, {skipped} skipped, {failed} failed'
                 summary = re.match(r'^(\S+)\s+=\s+([\d.]+) sec\*proc \((\d+) tests?\)', line)
                 if summary:
-                    labels.append(f'{summary.group(1)} {float(summary.group(2)):.0f} ({summary.group(3)})')
+                    step_labels.append(f'{summary.group(1)} {float(summary.group(2)):.0f} ({summary.group(3)})')
             process.wait()
             runs.append(time.monotonic() - t0)
+            if step_labels:  # a later step without ctest keeps the summary a ctest step left
+                labels = step_labels
             if process.returncode != 0:
                 print(f'measure.py: step "{label}" exited {process.returncode}; nothing written', file=sys.stderr)
                 return 1

@@ -7,6 +7,7 @@ set -euo pipefail
 packages=(
   # toolchain
   cmake g++ ninja-build pkg-config git
+  make  # the build test configures with CMake's default generator, Unix Makefiles (cmake only recommends make)
   # the CPU model, the command line and the reference
   nlohmann-json3-dev libglm-dev libcli11-dev libopenimageio-dev
   libxxhash-dev  # XXH3, the bake cache file's checksum

@@ -4,8 +4,8 @@
 // twice (shaders/CMakeLists.txt): the model's build, which every shipped
 // pipeline uses, has LIGHTCTS_ADMISSIBLE_VARIANTS 0, so each function is the
 // plain operation and no variant's code is in its SPIR-V (SwiftShader compiles
-// what a specialization constant would switch off: five times the pipeline
-// time); the variants' build has the code, chosen by the ADMISSIBLE constant
+// what a specialization constant would switch off, several times the
+// pipeline's time); the variants' build has the code, chosen by the ADMISSIBLE constant
 // (a Vulkan variant pipeline gets it with that choice folded in,
 // shaders/spirv_constant_folding.h).
 //

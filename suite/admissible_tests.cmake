@@ -19,7 +19,7 @@ foreach(combination ${backend_combinations})
                    -DCOMBINATION=${suffix} -DBACKEND=${backend} -DDRIVER=${driver} -DOUT=${CMAKE_BINARY_DIR}/test-out/admissible/${suffix}
                    -DEXPECTED=${admissible_expected} -P ${CMAKE_CURRENT_SOURCE_DIR}/admissible_run.cmake)
   # COST: started first (CMakeLists.txt says why): SwiftShader's compiles each
-  # variant's pipelines, the longest test of the suite.
+  # variant's pipelines, one of the suite's long tests.
   set_tests_properties(admissible.${suffix} PROPERTIES LABELS "admissible;${suffix}"
     SKIP_REGULAR_EXPRESSION "NotSupported: no backend" ENVIRONMENT "${backend_test_environment}" COST 40)
 endforeach()

@@ -6,7 +6,6 @@
 #include "shaders/spirv_constant_folding.h"
 
 #include <array>
-#include <optional>
 #include <vector>
 
 namespace backends::vulkan {
@@ -33,20 +32,14 @@ vk::raii::ShaderModule shaderModule(const vk::raii::Device& device, std::span<co
                                 vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(), .pCode = spirv.data()});
 }
 
-// `stage` as a pipeline with `constants` runs it when those choose one of
-// lightcts's own deliberate implementations, an admissible variant or a
-// mutant: its build with that choice folded in; empty for every other
-// pipeline, which runs the model's build as it is.
-std::optional<vk::raii::ShaderModule> chosenImplementationModule(const vk::raii::Device& device, shaders::Stage stage,
-                                                                 const shaders::ConstantValues& constants) {
+// `stage`'s build for `constants` with their admissible variant and mutant,
+// lightcts's own deliberate implementations, folded in.
+vk::raii::ShaderModule chosenImplementationModule(const vk::raii::Device& device, shaders::Stage stage,
+                                                  const shaders::ConstantValues& constants) {
   const shaders::ShaderBuild build = shaders::shaderBuildOf(constants);
-  const bool mutant = constants[shaders::kMutant] != 0;
-  if (build == shaders::ShaderBuild::Model && !mutant) return std::nullopt;
-  const std::span<const std::uint32_t> spirv = shaders::spirv(stage, build);
-  std::vector<std::uint32_t> folded(spirv.begin(), spirv.end());
-  if (build == shaders::ShaderBuild::AdmissibleVariants)
-    folded = shaders::withConstantComparisonsFolded(folded, shaders::kAdmissible, constants[shaders::kAdmissible]);
-  if (mutant) folded = shaders::withConstantComparisonsFolded(folded, shaders::kMutant, constants[shaders::kMutant]);
+  std::vector<std::uint32_t> folded = shaders::withConstantComparisonsFolded(
+      shaders::spirv(stage, build), shaders::kAdmissible, constants[shaders::kAdmissible]);
+  folded = shaders::withConstantComparisonsFolded(folded, shaders::kMutant, constants[shaders::kMutant]);
   return shaderModule(device, folded);
 }
 
@@ -58,22 +51,31 @@ ShaderStages::ShaderStages(const vk::raii::Device& device, shaders::Stage vertex
       vertex(shaderModule(device, shaders::spirv(vertexStage, shaders::ShaderBuild::Model))),
       fragment(shaderModule(device, shaders::spirv(fragmentStage, shaders::ShaderBuild::Model))) {}
 
+std::pair<vk::ShaderModule, vk::ShaderModule> ShaderStages::modulesFor(const vk::raii::Device& device,
+                                                                       const shaders::ConstantValues& constants) const {
+  const Choice choice{constants[shaders::kAdmissible], constants[shaders::kMutant]};
+  if (choice == Choice{0, 0}) return {*vertex, *fragment};
+  auto found = chosen_.find(choice);
+  if (found == chosen_.end())
+    found = chosen_
+                .emplace(choice, std::pair{chosenImplementationModule(device, vertexStage, constants),
+                                           chosenImplementationModule(device, fragmentStage, constants)})
+                .first;
+  return {*found->second.first, *found->second.second};
+}
+
 vk::raii::Pipeline PipelineBuilder::build(const vk::raii::PipelineLayout& layout, const ShaderStages& shaderStages,
                                           const shaders::ConstantValues& constants,
                                           const PassPipelineState& pass) const {
   const Specialization specialization(constants);
-  // Made for this pipeline alone: a module may go once its pipelines are made.
-  const std::optional<vk::raii::ShaderModule> chosenVertex =
-      chosenImplementationModule(device_.device, shaderStages.vertexStage, constants);
-  const std::optional<vk::raii::ShaderModule> chosenFragment =
-      chosenImplementationModule(device_.device, shaderStages.fragmentStage, constants);
+  const auto [vertexModule, fragmentModule] = shaderStages.modulesFor(device_.device, constants);
   const std::array<vk::PipelineShaderStageCreateInfo, 2> stages{{
       {.stage = vk::ShaderStageFlagBits::eVertex,
-       .module = chosenVertex ? **chosenVertex : *shaderStages.vertex,
+       .module = vertexModule,
        .pName = "main",
        .pSpecializationInfo = &specialization.info},
       {.stage = vk::ShaderStageFlagBits::eFragment,
-       .module = chosenFragment ? **chosenFragment : *shaderStages.fragment,
+       .module = fragmentModule,
        .pName = "main",
        .pSpecializationInfo = &specialization.info},
   }};

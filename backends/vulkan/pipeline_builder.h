@@ -14,6 +14,8 @@
 #include "shaders/shader_constants.h"
 
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -22,14 +24,24 @@ namespace backends::vulkan {
 // A pass's vertex and fragment shader modules, from embedded SPIR-V.
 // A vertex and a fragment stage (shaders/embedded_spirv.h): a pipeline takes
 // the build its constants ask for (shaders::shaderBuildOf). The model's build
-// is made into modules once; the pipeline of an admissible variant or a
-// mutant gets modules of its build with that choice folded in
-// (shaders/spirv_constant_folding.h), made when the pipeline is.
+// is made into modules once; the pipelines of an admissible variant or a
+// mutant get modules of its build with that choice folded in
+// (shaders/spirv_constant_folding.h), made once per variant and mutant.
 struct ShaderStages {
   ShaderStages(const vk::raii::Device& device, shaders::Stage vertexStage, shaders::Stage fragmentStage);
 
+  // The vertex and fragment modules a pipeline with `constants` runs: the
+  // model's, or those of its admissible variant and mutant, made the first
+  // time that pair is asked for.
+  std::pair<vk::ShaderModule, vk::ShaderModule> modulesFor(const vk::raii::Device& device,
+                                                           const shaders::ConstantValues& constants) const;
+
   shaders::Stage vertexStage, fragmentStage;
   vk::raii::ShaderModule vertex, fragment;  // the model's build
+
+ private:
+  using Choice = std::pair<std::int32_t, std::int32_t>;  // ADMISSIBLE, MUTANT
+  mutable std::map<Choice, std::pair<vk::raii::ShaderModule, vk::raii::ShaderModule>> chosen_;
 };
 
 struct PassPipelineState {

@@ -2,6 +2,7 @@
 // every scene of suite/scenes, plus two synthetic loads
 // (512x512 over 100k triangles; 64 lights summed per pixel). Counters report
 // pixels and pixel-light evaluations per second, tolerance shading included.
+#include "app/exit_status.h"
 #include "baking/bake.h"
 #include "lighting/frame.h"
 #include "reference/reference_renderer.h"
@@ -95,7 +96,7 @@ int main(int argc, char** argv) {
       ->Unit(benchmark::kMillisecond);
   registerSceneFiles();
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return app::kExitBadInput;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
