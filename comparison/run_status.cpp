@@ -8,7 +8,7 @@ namespace {
 
 constexpr std::array kBackendStatuses = {BackendStatus::Ran, BackendStatus::NotSupported, BackendStatus::Error};
 constexpr std::array kMutantStatuses = {MutantStatus::Killed, MutantStatus::Survived, MutantStatus::NotSupported,
-                                        MutantStatus::Crash, MutantStatus::Timeout};
+                                        MutantStatus::Crash, MutantStatus::Timeout, MutantStatus::NotRun};
 
 constexpr std::array kAdmissibleStatuses = {AdmissibleStatus::Sound, AdmissibleStatus::Unsound,
                                             AdmissibleStatus::Incomplete, AdmissibleStatus::NotSupported};
@@ -40,6 +40,7 @@ std::string_view mutantStatusName(MutantStatus status) {
     case MutantStatus::NotSupported: return verdictName(Verdict::NotSupported);
     case MutantStatus::Crash: return verdictName(Verdict::Crash);
     case MutantStatus::Timeout: return verdictName(Verdict::Timeout);
+    case MutantStatus::NotRun: return verdictName(Verdict::NotRun);
   }
   throw std::invalid_argument("mutantStatusName: not a MutantStatus");
 }
@@ -87,7 +88,8 @@ bool isRunFailure(MutantStatus status) {
     case MutantStatus::NotSupported: return false;
     case MutantStatus::Survived:
     case MutantStatus::Crash:
-    case MutantStatus::Timeout: return true;
+    case MutantStatus::Timeout:
+    case MutantStatus::NotRun: return true;
   }
   return true;
 }
@@ -106,7 +108,8 @@ CiOutcome ciOutcome(MutantStatus status) {
     case MutantStatus::Killed: return CiOutcome::Pass;
     case MutantStatus::NotSupported: return CiOutcome::Skipped;
     case MutantStatus::Crash:
-    case MutantStatus::Timeout: return CiOutcome::Error;
+    case MutantStatus::Timeout:
+    case MutantStatus::NotRun: return CiOutcome::Error;
     case MutantStatus::Survived: return CiOutcome::Failure;
   }
   return CiOutcome::Failure;

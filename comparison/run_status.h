@@ -21,8 +21,9 @@ std::optional<BackendStatus> parseBackendStatus(std::string_view name);
 std::ostream& operator<<(std::ostream& out, BackendStatus status);
 
 // Killed: at least one scene that passes without the mutant failed with it.
-// Crash and Timeout: its run did not finish, so it proves nothing.
-enum class MutantStatus { Killed, Survived, NotSupported, Crash, Timeout };
+// Crash and Timeout: its run did not finish, so it proves nothing; NotRun:
+// an interrupted run stopped before its scenes were checked, likewise.
+enum class MutantStatus { Killed, Survived, NotSupported, Crash, Timeout, NotRun };
 
 std::string_view mutantStatusName(MutantStatus status);  // "killed" | "survived" | "NotSupported" | ...
 std::optional<MutantStatus> parseMutantStatus(std::string_view name);
@@ -31,7 +32,7 @@ std::ostream& operator<<(std::ostream& out, MutantStatus status);
 // An admissible variant (SPEC 7) on a backend, over its tests. Sound: every
 // scene passed (or failed as its expected-failures line says). Unsound: some
 // scene failed, a fault of lightcts (or of the driver, then listed).
-// Incomplete: some test crashed or timed out, so it proves nothing.
+// Incomplete: some test crashed, timed out or was not run, so it proves nothing.
 // NotSupported: the backend is not present.
 enum class AdmissibleStatus { Sound, Unsound, Incomplete, NotSupported };
 
@@ -40,12 +41,12 @@ std::optional<AdmissibleStatus> parseAdmissibleStatus(std::string_view name);
 std::ostream& operator<<(std::ostream& out, AdmissibleStatus status);
 
 // A status that makes `lightcts run` exit 1: a backend Error; a mutant that
-// Survived, Crashed or Timed out; an admissible variant Unsound or Incomplete.
+// Survived, Crashed, Timed out or was not run; an admissible variant Unsound or Incomplete.
 bool isRunFailure(BackendStatus status);
 bool isRunFailure(MutantStatus status);
 
 // What it means to CI: Ran and Killed pass, NotSupported is a skip, a
-// backend Error and a mutant's Crash or Timeout are errors, Survived fails.
+// backend Error and a mutant's Crash, Timeout or NotRun are errors, Survived fails.
 CiOutcome ciOutcome(BackendStatus status);
 CiOutcome ciOutcome(MutantStatus status);
 

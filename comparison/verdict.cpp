@@ -15,6 +15,7 @@ std::string_view verdictName(Verdict verdict) {
     case Verdict::ExpectedFail: return "ExpectedFail";
     case Verdict::UnexpectedPass: return "UnexpectedPass";
     case Verdict::Flake: return "Flake";
+    case Verdict::NotRun: return "NotRun";
   }
   throw std::invalid_argument("verdictName: not a Verdict");
 }
@@ -34,7 +35,8 @@ bool isRunFailure(Verdict verdict) {
     case Verdict::Fail:
     case Verdict::Crash:
     case Verdict::Timeout:
-    case Verdict::UnexpectedPass: return true;
+    case Verdict::UnexpectedPass:
+    case Verdict::NotRun: return true;
     case Verdict::Pass:
     case Verdict::QualityWarning:
     case Verdict::NotSupported:
@@ -56,7 +58,8 @@ CiOutcome ciOutcome(Verdict verdict) {
     case Verdict::ExpectedFail: return CiOutcome::Skipped;
     // The test did not run to its end.
     case Verdict::Crash:
-    case Verdict::Timeout: return CiOutcome::Error;
+    case Verdict::Timeout:
+    case Verdict::NotRun: return CiOutcome::Error;
     case Verdict::Fail:
     case Verdict::UnexpectedPass: return CiOutcome::Failure;
   }
@@ -65,9 +68,11 @@ CiOutcome ciOutcome(Verdict verdict) {
 
 bool needsAttention(Verdict verdict) {
   switch (verdict) {
+    // A test that never ran has no evidence to look at; the report counts it.
     case Verdict::Pass:
     case Verdict::NotSupported:
-    case Verdict::ExpectedFail: return false;
+    case Verdict::ExpectedFail:
+    case Verdict::NotRun: return false;
     case Verdict::Fail:
     case Verdict::QualityWarning:
     case Verdict::Crash:
@@ -88,11 +93,12 @@ bool isExpectable(Verdict verdict) {
     case Verdict::NotSupported:
     case Verdict::ExpectedFail:
     case Verdict::UnexpectedPass:
-    case Verdict::Flake: return false;
+    case Verdict::Flake:
+    case Verdict::NotRun: return false;
   }
   return false;
 }
 
-bool listedWhenZero(Verdict verdict) { return verdict != Verdict::Flake; }
+bool listedWhenZero(Verdict verdict) { return verdict != Verdict::Flake && verdict != Verdict::NotRun; }
 
 }  // namespace comparison

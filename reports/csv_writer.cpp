@@ -73,6 +73,9 @@ std::string failuresCsv(const Json& results) {
     } else if (*verdict == Verdict::UnexpectedPass) {
       text += "# " + commentText(entry) + ": passes now; remove its line from the expected-failures file (it was listed: " +
               commentText(textField(test, "expected_reason")) + ")\n";
+    } else if (!comparison::isExpectable(*verdict)) {  // NotRun: the run was interrupted before it
+      text += "# " + commentText(entry) + ": " + reasonOf(test, verdictName) +
+              "; not listed, an expected-failures line cannot name " + verdictName + "\n";
     } else if (name.empty() || name.find_first_of(",#\r\n") != std::string::npos) {
       text += "# " + commentText(entry) +
               ": cannot be listed, an expected-failures file cannot hold a name with ',' or '#'\n";

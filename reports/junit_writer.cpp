@@ -138,6 +138,7 @@ Case testCase(const Json& test, const std::string& evidenceUrl) {
       c.message = c.type + ": " + (message.empty() ? metrics : message);
       c.details = testDetails(test);
       break;
+    case Verdict::NotRun: c.message = "NotRun: " + message; break;  // the run was interrupted first
   }
   // Every failing testcase names its evidence page where CI pages show it first.
   if ((c.outcome == Outcome::Failure || c.outcome == Outcome::Error) && !page.empty())
@@ -166,6 +167,7 @@ Case mutantCase(const Json& mutant, const std::string& check) {
     case MutantStatus::NotSupported: c.message = "NotSupported"; break;
     case MutantStatus::Crash:
     case MutantStatus::Timeout:
+    case MutantStatus::NotRun:
       c.message = status + ": the mutant's run did not finish; it proves nothing (" + what + ")";
       break;
     case MutantStatus::Survived:

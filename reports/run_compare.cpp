@@ -85,7 +85,8 @@ std::string_view verdictClass(std::string_view verdict) {
     case comparison::Verdict::Fail:
     case comparison::Verdict::UnexpectedPass: return "fail";
     case comparison::Verdict::Crash:
-    case comparison::Verdict::Timeout: return "crash";
+    case comparison::Verdict::Timeout:
+    case comparison::Verdict::NotRun: return "crash";
     case comparison::Verdict::QualityWarning:
     case comparison::Verdict::Flake: return "warn";
     case comparison::Verdict::NotSupported:

@@ -32,17 +32,19 @@ MutantStatus mutantStatus(const MutantObservations& seen) {
          : seen.backendAbsent ? MutantStatus::NotSupported
          : seen.crashed       ? MutantStatus::Crash
          : seen.timedOut      ? MutantStatus::Timeout
+         : seen.notRun        ? MutantStatus::NotRun
                               : MutantStatus::Survived;
 }
 
 MutantObservations observationsOf(MutantStatus status) {
   return {status == MutantStatus::Killed, status == MutantStatus::NotSupported, status == MutantStatus::Crash,
-          status == MutantStatus::Timeout};
+          status == MutantStatus::Timeout, status == MutantStatus::NotRun};
 }
 
 MutantObservations joined(const MutantObservations& a, const MutantObservations& b) {
   // Absent only where every part was: a backend present in one shard checked the mutant there.
-  return {a.killed || b.killed, a.backendAbsent && b.backendAbsent, a.crashed || b.crashed, a.timedOut || b.timedOut};
+  return {a.killed || b.killed, a.backendAbsent && b.backendAbsent, a.crashed || b.crashed, a.timedOut || b.timedOut,
+          a.notRun || b.notRun};
 }
 
 bool passed(Verdict raw) { return raw == Verdict::Pass || raw == Verdict::QualityWarning; }

@@ -29,9 +29,10 @@ struct MutantObservations {
   bool backendAbsent = false;   // its backend was NotSupported (in every shard)
   bool crashed = false;         // some task crashed
   bool timedOut = false;        // some task timed out
+  bool notRun = false;          // some task was not run: the run was interrupted
 };
-// Killed, else NotSupported, else Crash, else Timeout, else Survived: a kill
-// proves the check, and a run that did not finish proves nothing.
+// Killed, else NotSupported, else Crash, else Timeout, else NotRun, else
+// Survived: a kill proves the check, and a run that did not finish proves nothing.
 comparison::MutantStatus mutantStatus(const MutantObservations& seen);
 // A mutant record's status as observations, so shards' records join.
 MutantObservations observationsOf(comparison::MutantStatus status);
@@ -53,7 +54,7 @@ std::map<comparison::Verdict, int> countAdmissibleVerdicts(const std::vector<Tes
 
 // Each admissible variant on each backend over its tests, in the order the
 // tests first show them: Unsound when a test is a run failure by a Fail,
-// else Incomplete when one crashed or timed out, else NotSupported when
+// else Incomplete when one crashed, timed out or was not run, else NotSupported when
 // every test was, else Sound. `run` and `merge` both derive them from the
 // tests, so they cannot drift apart. `what` and `grant` are the table's
 // (shaders/shader_interface.def), which the runner fills in.

@@ -3,6 +3,7 @@
 #include "app/exit_status.h"
 #include "comparison/verdict.h"
 #include "imaging/atomic_file.h"
+#include "runner/run_interruption.h"
 #include "runner/worker_process.h"
 #include "runner/worker_protocol.h"
 
@@ -59,8 +60,20 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
     if (callbacks.note) callbacks.note(line);
   };
 
+  // Interrupted (runner/run_interruption.h): the tasks from `next` on are NotRun.
+  auto recordNotRun = [&](std::size_t from) {
+    const std::string message =
+        std::string("not run: the run was interrupted by ") + signalName(interruptingSignal()) + " first";
+    for (std::size_t i = from; i < plan.tasks.size(); ++i)
+      record(plan.tasks[i], abnormalResult(plan.tasks[i], Verdict::NotRun, message));
+  };
+
   std::size_t next = 0;
   while (next < plan.tasks.size()) {
+    if (interruptingSignal() != 0) {
+      recordNotRun(next);
+      break;
+    }
     WorkerProcess worker({workerExecutable, "worker", "--plan", planFile.string(), "--start", std::to_string(next)},
                          logFile.string());
     std::string line;
@@ -69,6 +82,12 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
     bool backendUp = false;  // this worker said "device": its backend was created
     for (;;) {
       const auto status = worker.readLine(timeout, line);
+      if (status == WorkerProcess::ReadStatus::Interrupted) {
+        worker.finish(true);
+        recordNotRun(next);
+        next = plan.tasks.size();
+        break;
+      }
       if (status != WorkerProcess::ReadStatus::Line && !backendUp) {
         const bool hung = status == WorkerProcess::ReadStatus::TimedOut;
         const std::string how = worker.finish(hung);

@@ -2,7 +2,9 @@
 // processes as it takes: a worker that dies or hangs costs its current test
 // (Crash or Timeout) and a new worker picks up at the next one. A worker
 // that dies or hangs before its backend is up would do the same for every
-// task: the backend is an error and the rest of the plan is not run.
+// task: the backend is an error and the rest of the plan is not run. Once
+// the run is interrupted (runner/run_interruption.h) the worker is killed
+// and every task it had not finished is NotRun.
 #pragma once
 
 #include "comparison/run_status.h"

@@ -67,6 +67,7 @@ results::MutantRecord mutantRecord(shaders::Mutant mutant, const std::string& su
     }
     seen.crashed = seen.crashed || r->rawVerdict == Verdict::Crash;
     seen.timedOut = seen.timedOut || r->rawVerdict == Verdict::Timeout;
+    seen.notRun = seen.notRun || r->rawVerdict == Verdict::NotRun;
   }
   seen.killed = !record.killedBy.empty();
   record.status = results::mutantStatus(seen);

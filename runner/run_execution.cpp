@@ -2,6 +2,7 @@
 
 #include "runner/part_run.h"
 #include "runner/part_scheduler.h"
+#include "runner/run_interruption.h"
 #include "runner/run_progress.h"
 
 #include <chrono>
@@ -109,6 +110,7 @@ class Execution {
   // combination's tests, one worker per combination, up to --jobs at once.
   void retryFailures(std::vector<CombinationRun>& runs, RunProgress& progress) {
     for (int retry = 1; retry <= options_.flakeRetries; ++retry) {
+      if (interruptingSignal() != 0) return;  // an interrupted run retries nothing
       std::vector<WorkerPart> retryParts;
       std::vector<std::vector<std::size_t>> retried;  // per retry part, the indices of its tasks
       for (std::size_t c = 0; c < runs.size(); ++c) {

@@ -7,6 +7,7 @@
 #include "runner/run_budgets.h"
 #include "runner/run_execution.h"
 #include "runner/run_inputs.h"
+#include "runner/run_interruption.h"
 #include "runner/run_metadata.h"
 #include "runner/run_results.h"
 #include "runner/run_units.h"
@@ -38,7 +39,8 @@ std::string formatMs(double ms) {
 // whatever the backends; mutant-only runs check no scene of their own.
 Json lightBudgets(const RunOptions& options, const RunInputs& inputs, const RunUnits& plan, const fs::path& outDir,
                   std::vector<std::string>& summary) {
-  if (options.noBudgets || options.mutantsOnly) return Json::object();
+  // An interrupted run writes what it has, and budgets it has not computed.
+  if (options.noBudgets || options.mutantsOnly || interruptingSignal() != 0) return Json::object();
   const auto started = Clock::now();
   std::set<std::string> heldCases;
   for (const RunUnit& unit : plan.units) heldCases.insert(unit.test.substr(0, unit.test.rfind('.')));
@@ -97,6 +99,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
     return 0;
   }
 
+  const InterruptionGuard interruption;
   const fs::path outDir(options.outDir);
   fs::create_directories(outDir / "logs");
   removeStaleRunOutputs(outDir);
@@ -143,6 +146,15 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   run.durationSeconds = std::chrono::duration<double>(Clock::now() - started).count();
   writeRunOutputs(run.toJson(), outDir);
   printSummary(options, run, records, budgetLines, imagesDropped, outDir, out);
+
+  if (const int signal = interruptingSignal(); signal != 0) {
+    const auto notRun = std::count_if(run.tests.begin(), run.tests.end(), [](const results::TestRecord& t) {
+      return t.verdict == comparison::Verdict::NotRun;
+    });
+    err << "lightcts: run: interrupted by " << signalName(signal) << ": " << run.tests.size() - notRun
+        << " test(s) finished, " << notRun << " NotRun; exit status " << interruptedExitStatus(signal) << "\n";
+    return interruptedExitStatus(signal);
+  }
 
   if (options.shard && plan.units.empty()) {  // a small selection cut into many shards
     out << "run: shard " << options.shard->index << "/" << options.shard->total

@@ -75,7 +75,9 @@ struct RunOptions {
 // Exit status: 0 when every test that ran passed (or failed as expected, or
 // was a Flake without flakesFail) and every mutant was killed (in a shard, a
 // mutant that survives its shard's scenes fails only the merged run); 1
-// otherwise; 3 when no backend was present.
+// otherwise; 3 when no backend was present; 128 + the signal (130, 143)
+// when SIGINT or SIGTERM interrupted it (runner/run_interruption.h), with
+// the outputs written for the tests that finished.
 // Throws std::invalid_argument / lighting::SceneLoadError / std::runtime_error
 // for bad input (the caller maps them to exit 2).
 int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err);

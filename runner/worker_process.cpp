@@ -1,5 +1,7 @@
 #include "runner/worker_process.h"
 
+#include "runner/run_interruption.h"
+
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -45,6 +47,7 @@ WorkerProcess::WorkerProcess(const std::vector<std::string>& argv, const std::st
     _exit(127);
   }
   setpgid(pid, pid);  // also here, so that a kill right after the start finds the group
+  addWorkerGroup(pid);
   close(pipeFds[1]);
   close(errFd);
   pid_ = pid;
@@ -65,13 +68,22 @@ WorkerProcess::ReadStatus WorkerProcess::readLine(std::chrono::milliseconds time
       return ReadStatus::Line;
     }
     if (fd_ < 0) return ReadStatus::Closed;
+    // Interrupted, the lines already written are still read (a result that
+    // arrived with the signal is kept), without waiting for more.
+    const bool interrupted = interruptingSignal() != 0;
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) return ReadStatus::TimedOut;
-    pollfd p{fd_, POLLIN, 0};
-    const int ready = poll(&p, 1, int(left.count()));
+    if (!interrupted && left.count() <= 0) return ReadStatus::TimedOut;
+    // The interruption's descriptor (-1 without a guard, which poll skips)
+    // wakes every thread that waits on a worker.
+    pollfd p[2] = {{fd_, POLLIN, 0}, {interrupted ? -1 : interruptionDescriptor(), POLLIN, 0}};
+    const int ready = poll(p, 2, interrupted ? 0 : int(left.count()));
     if (ready < 0 && errno == EINTR) continue;
     if (ready < 0) throw std::runtime_error(systemError("cannot wait for a worker"));
-    if (ready == 0) return ReadStatus::TimedOut;
+    if (p[0].revents == 0) {
+      if (interrupted) return ReadStatus::Interrupted;
+      if (ready == 0) return ReadStatus::TimedOut;
+      continue;  // the interruption woke it: said on the next turn, after what has arrived
+    }
     char chunk[65536];
     const ssize_t n = read(fd_, chunk, sizeof chunk);
     if (n < 0 && errno == EINTR) continue;
@@ -98,6 +110,7 @@ std::string WorkerProcess::finish(bool kill) {
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
+  removeWorkerGroup(pid_);
   pid_ = -1;
   if (WIFEXITED(status)) {
     exitStatus_ = WEXITSTATUS(status);

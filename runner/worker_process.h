@@ -21,9 +21,10 @@ class WorkerProcess {
   WorkerProcess(const WorkerProcess&) = delete;
   WorkerProcess& operator=(const WorkerProcess&) = delete;
 
-  enum class ReadStatus { Line, Closed, TimedOut };
+  enum class ReadStatus { Line, Closed, TimedOut, Interrupted };
   // The next line (without '\n') within `timeout`; Closed when the child
-  // closed its output (it exited or died).
+  // closed its output (it exited or died); Interrupted once the run is
+  // (runner/run_interruption.h), after every whole line that had arrived.
   ReadStatus readLine(std::chrono::milliseconds timeout, std::string& line);
 
   // Waits for the child to end and describes how: "exit status N" or

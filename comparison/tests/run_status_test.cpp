@@ -31,8 +31,9 @@ TEST(MutantStatus, NamesRoundTripAndUnknownNamesAreRejected) {
   EXPECT_EQ(mutantStatusName(MutantStatus::NotSupported), "NotSupported");
   EXPECT_EQ(mutantStatusName(MutantStatus::Crash), "Crash");
   EXPECT_EQ(mutantStatusName(MutantStatus::Timeout), "Timeout");
+  EXPECT_EQ(mutantStatusName(MutantStatus::NotRun), "NotRun");
   for (const MutantStatus status : {MutantStatus::Killed, MutantStatus::Survived, MutantStatus::NotSupported,
-                                    MutantStatus::Crash, MutantStatus::Timeout})
+                                    MutantStatus::Crash, MutantStatus::Timeout, MutantStatus::NotRun})
     EXPECT_EQ(parseMutantStatus(mutantStatusName(status)), status) << status;
   for (const char* name : {"", "Killed", "SURVIVED", "Fail", "Pass", "timeout"})
     EXPECT_FALSE(parseMutantStatus(name).has_value()) << "'" << name << "'";
@@ -44,11 +45,13 @@ TEST(MutantStatus, KilledPassesNotSupportedSkipsTheRestFail) {
   EXPECT_TRUE(isRunFailure(MutantStatus::Survived));
   EXPECT_TRUE(isRunFailure(MutantStatus::Crash));
   EXPECT_TRUE(isRunFailure(MutantStatus::Timeout));
+  EXPECT_TRUE(isRunFailure(MutantStatus::NotRun));
   EXPECT_EQ(ciOutcome(MutantStatus::Killed), CiOutcome::Pass);
   EXPECT_EQ(ciOutcome(MutantStatus::NotSupported), CiOutcome::Skipped);
   EXPECT_EQ(ciOutcome(MutantStatus::Survived), CiOutcome::Failure);
   EXPECT_EQ(ciOutcome(MutantStatus::Crash), CiOutcome::Error);
   EXPECT_EQ(ciOutcome(MutantStatus::Timeout), CiOutcome::Error);
+  EXPECT_EQ(ciOutcome(MutantStatus::NotRun), CiOutcome::Error);
 }
 
 }  // namespace

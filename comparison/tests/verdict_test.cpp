@@ -15,7 +15,8 @@ TEST(Verdict, NamesAreTheWordsOfResultsJsonInReportOrder) {
   std::vector<std::string> names;
   for (const Verdict verdict : kAllVerdicts) names.emplace_back(verdictName(verdict));
   const std::vector<std::string> expected = {"Pass",    "Fail",         "QualityWarning", "NotSupported", "Crash",
-                                             "Timeout", "ExpectedFail", "UnexpectedPass", "Flake"};
+                                             "Timeout", "ExpectedFail", "UnexpectedPass", "Flake",
+                                             "NotRun"};
   EXPECT_EQ(names, expected);
 }
 
@@ -50,6 +51,7 @@ TEST(Verdict, RunFailures) {
   EXPECT_FALSE(isRunFailure(Verdict::ExpectedFail));
   EXPECT_TRUE(isRunFailure(Verdict::UnexpectedPass));  // a fixed bug: the baseline line must go
   EXPECT_FALSE(isRunFailure(Verdict::Flake));          // it passed on a retry
+  EXPECT_TRUE(isRunFailure(Verdict::NotRun));          // an interrupted run proves nothing
 }
 
 TEST(Verdict, CiOutcomes) {
@@ -62,6 +64,7 @@ TEST(Verdict, CiOutcomes) {
   EXPECT_EQ(ciOutcome(Verdict::ExpectedFail), CiOutcome::Skipped);
   EXPECT_EQ(ciOutcome(Verdict::UnexpectedPass), CiOutcome::Failure);
   EXPECT_EQ(ciOutcome(Verdict::Flake), CiOutcome::Pass);
+  EXPECT_EQ(ciOutcome(Verdict::NotRun), CiOutcome::Error);  // it did not run to its end
 }
 
 TEST(Verdict, RunFailuresAreExactlyTheCiFailuresAndErrors) {
@@ -81,6 +84,7 @@ TEST(Verdict, NeedsAttention) {
   EXPECT_FALSE(needsAttention(Verdict::ExpectedFail));
   EXPECT_TRUE(needsAttention(Verdict::UnexpectedPass));
   EXPECT_TRUE(needsAttention(Verdict::Flake));
+  EXPECT_FALSE(needsAttention(Verdict::NotRun));  // no evidence to look at
 }
 
 TEST(Verdict, ExpectableAreTheFailingVerdictsOfSpec7) {
@@ -91,8 +95,9 @@ TEST(Verdict, ExpectableAreTheFailingVerdictsOfSpec7) {
             (std::vector<Verdict>{Verdict::Fail, Verdict::QualityWarning, Verdict::Crash, Verdict::Timeout}));
 }
 
-TEST(Verdict, CountTablesListFlakeOnlyWhenOneOccurred) {
-  for (const Verdict verdict : kAllVerdicts) EXPECT_EQ(listedWhenZero(verdict), verdict != Verdict::Flake) << verdict;
+TEST(Verdict, CountTablesListFlakeAndNotRunOnlyWhenOneOccurred) {
+  for (const Verdict verdict : kAllVerdicts)
+    EXPECT_EQ(listedWhenZero(verdict), verdict != Verdict::Flake && verdict != Verdict::NotRun) << verdict;
 }
 
 }  // namespace

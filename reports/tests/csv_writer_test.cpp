@@ -93,6 +93,22 @@ TEST(RunCsv, UnknownVerdictsAreShownNotListed) {
   EXPECT_NE(resultsCsv(results).find("attenuation.point-d-0.vulkan,pass,0.025\n"), std::string::npos);
 }
 
+// An interrupted run's NotRun test is a run failure, but no line an
+// expected-failures file can hold: a comment, and the file still loads.
+TEST(RunCsv, NotRunTestsAreShownNotListed) {
+  auto results = testing::sampleResults();
+  results["tests"][0]["verdict"] = "NotRun";
+  results["tests"][0]["message"] = "not run: the run was interrupted by SIGINT first";
+  const std::string text = failuresCsv(results);
+  EXPECT_NE(text.find("# attenuation.point-d-0.vulkan,NotRun: not run: the run was interrupted by SIGINT first; not "
+                      "listed, an expected-failures line cannot name NotRun\n"),
+            std::string::npos)
+      << text;
+  runner::ExpectedFailures expected;
+  ASSERT_NO_THROW(expected.parse(text, "failures.csv"));
+  EXPECT_EQ(expected.find("attenuation.point-d-0.vulkan"), nullptr);
+}
+
 TEST(RunCsv, NamesWithCommasAreQuotedInResults) {
   auto results = testing::sampleResults();
   results["tests"][0]["name"] = "a,b \"c\".vulkan";

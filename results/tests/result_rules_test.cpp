@@ -37,10 +37,11 @@ TEST(ResultRules, ABackendAbsentInSomePartsIsAnError) {
 }
 
 TEST(ResultRules, AKillOutranksEveryOtherObservation) {
-  EXPECT_EQ(mutantStatus({true, true, true, true}), MutantStatus::Killed);
-  EXPECT_EQ(mutantStatus({false, true, true, true}), MutantStatus::NotSupported);
-  EXPECT_EQ(mutantStatus({false, false, true, true}), MutantStatus::Crash);
-  EXPECT_EQ(mutantStatus({false, false, false, true}), MutantStatus::Timeout);
+  EXPECT_EQ(mutantStatus({true, true, true, true, true}), MutantStatus::Killed);
+  EXPECT_EQ(mutantStatus({false, true, true, true, true}), MutantStatus::NotSupported);
+  EXPECT_EQ(mutantStatus({false, false, true, true, true}), MutantStatus::Crash);
+  EXPECT_EQ(mutantStatus({false, false, false, true, true}), MutantStatus::Timeout);
+  EXPECT_EQ(mutantStatus({false, false, false, false, true}), MutantStatus::NotRun);
   EXPECT_EQ(mutantStatus({}), MutantStatus::Survived);
 }
 
@@ -52,7 +53,7 @@ TEST(ResultRules, ShardsJoinAMutantKilledInAnyAndAbsentOnlyWhereAbsentInAll) {
   EXPECT_EQ(mutantStatus(joined(absentThere, survivedThere)), MutantStatus::Survived);
   EXPECT_EQ(mutantStatus(joined(absentThere, absentThere)), MutantStatus::NotSupported);
   for (const MutantStatus s : {MutantStatus::Killed, MutantStatus::Survived, MutantStatus::NotSupported,
-                               MutantStatus::Crash, MutantStatus::Timeout})
+                               MutantStatus::Crash, MutantStatus::Timeout, MutantStatus::NotRun})
     EXPECT_EQ(mutantStatus(observationsOf(s)), s);
 }
 

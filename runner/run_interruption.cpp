@@ -1,0 +1,101 @@
+#include "runner/run_interruption.h"
+
+#include "app/exit_status.h"
+
+#include <array>
+#include <atomic>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+
+namespace runner {
+namespace {
+
+// What the handler touches: lock-free atomics and plain descriptors, all it
+// may use (POSIX's async-signal-safe functions: write, kill, _exit).
+std::atomic<int> interruptingSignal_{0};
+std::atomic<bool> guarded_{false};
+int wakeRead_ = -1;
+int wakeWrite_ = -1;
+// More than any --jobs needs: one worker per thread at a time.
+std::array<std::atomic<int>, 256> workerGroups_{};
+struct sigaction previousInt_ {};
+struct sigaction previousTerm_ {};
+
+void say(const char* text) { [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, text, std::strlen(text)); }
+
+extern "C" void onInterrupt(int signal) {
+  int none = 0;
+  if (interruptingSignal_.compare_exchange_strong(none, signal)) {
+    say(signal == SIGINT ? "\nlightcts: run: SIGINT: stopping the workers and writing the finished tests' results "
+                           "(a second signal ends at once)\n"
+                         : "\nlightcts: run: SIGTERM: stopping the workers and writing the finished tests' results "
+                           "(a second signal ends at once)\n");
+    const char byte = 1;
+    [[maybe_unused]] const ssize_t n = write(wakeWrite_, &byte, 1);
+    return;
+  }
+  for (std::atomic<int>& group : workerGroups_)
+    if (const int pid = group.load(); pid > 0) kill(-pid, SIGKILL);
+  say("lightcts: run: second signal: ended at once\n");
+  _exit(interruptedExitStatus(signal));
+}
+
+}  // namespace
+
+InterruptionGuard::InterruptionGuard() {
+  if (guarded_.exchange(true)) throw std::logic_error("InterruptionGuard: one is alive already");
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC | O_NONBLOCK) != 0) {
+    guarded_ = false;
+    throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+  }
+  wakeRead_ = fds[0];
+  wakeWrite_ = fds[1];
+  interruptingSignal_ = 0;
+  struct sigaction action {};
+  action.sa_handler = onInterrupt;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = 0;  // no SA_RESTART: a wait the signal breaks returns EINTR and looks again
+  sigaction(SIGINT, &action, &previousInt_);
+  sigaction(SIGTERM, &action, &previousTerm_);
+}
+
+InterruptionGuard::~InterruptionGuard() {
+  sigaction(SIGINT, &previousInt_, nullptr);
+  sigaction(SIGTERM, &previousTerm_, nullptr);
+  close(wakeRead_);
+  close(wakeWrite_);
+  wakeRead_ = wakeWrite_ = -1;
+  interruptingSignal_ = 0;
+  guarded_ = false;
+}
+
+int interruptingSignal() { return interruptingSignal_.load(); }
+
+int interruptionDescriptor() { return wakeRead_; }
+
+void addWorkerGroup(int pid) {
+  for (std::atomic<int>& group : workerGroups_) {
+    int empty = 0;
+    if (group.compare_exchange_strong(empty, pid)) return;
+  }
+}
+
+void removeWorkerGroup(int pid) {
+  for (std::atomic<int>& group : workerGroups_) {
+    int held = pid;
+    if (group.compare_exchange_strong(held, 0)) return;
+  }
+}
+
+int interruptedExitStatus(int signal) { return app::kExitInterruptedBase + signal; }
+
+const char* signalName(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+}
+
+}  // namespace runner
