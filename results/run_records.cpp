@@ -61,18 +61,21 @@ Json arrayOf(const std::vector<Record>& records) {
 
 // The outcome's keys after "message", in results.json's order.
 constexpr std::pair<Json TaskOutcome::*, const char*> kOutcomeValues[] = {
-    {&TaskOutcome::metrics, "metrics"},           {&TaskOutcome::frames, "frames"},
-    {&TaskOutcome::poppingScore, "popping_score"}, {&TaskOutcome::timingsMs, "timings_ms"},
-    {&TaskOutcome::evidence, "evidence"}};
+    {&TaskOutcome::metrics, "metrics"}, {&TaskOutcome::frames, "frames"}, {&TaskOutcome::poppingScore, "popping_score"}};
+constexpr const char* kTimingsKey = "timings_ms";
 
 void writeOutcome(const TaskOutcome& outcome, Json& json) {
   json["message"] = outcome.message;
   for (const auto& [field, key] : kOutcomeValues) json[key] = outcome.*field;
+  json[kTimingsKey] = outcome.timingsMs ? outcome.timingsMs->toJson() : Json(nullptr);
+  json["evidence"] = outcome.evidence;
 }
 
 void readOutcome(const Json& json, TaskOutcome& outcome) {
   outcome.message = text(json, "message");
   for (const auto& [field, key] : kOutcomeValues) outcome.*field = carried(json, key);
+  outcome.timingsMs = StageTimes::fromJson(carried(json, kTimingsKey));
+  outcome.evidence = carried(json, "evidence");
 }
 
 // A test's words before its verdicts, in results.json's order.
@@ -82,6 +85,19 @@ constexpr std::pair<std::string TestRecord::*, const char*> kTestWords[] = {
     {&TestRecord::description, "description"}, {&TestRecord::backend, "backend"}};
 
 }  // namespace
+
+Json StageTimes::toJson() const {
+  Json json = Json::object();
+  for (const auto& [field, key] : kFields) json[key] = this->*field;
+  return json;
+}
+
+std::optional<StageTimes> StageTimes::fromJson(const Json& json) {
+  if (!json.is_object()) return std::nullopt;
+  StageTimes times;
+  for (const auto& [field, key] : kFields) times.*field = number(json, key);
+  return times;
+}
 
 Json TaskResult::toJson() const {
   Json json = {{"test", test}, {"raw_verdict", comparison::verdictName(rawVerdict)}};
@@ -147,9 +163,9 @@ TaskTimes& TaskTimes::operator+=(const TaskTimes& other) {
 TaskTimes taskTimesOf(const std::vector<TaskResult>& results) {
   TaskTimes times;
   for (const TaskResult& r : results) {
-    if (!r.timingsMs.is_object()) continue;
-    times.referenceMs += number(r.timingsMs, "reference");
-    times.totalMs += number(r.timingsMs, "total");
+    if (!r.timingsMs) continue;
+    times.referenceMs += r.timingsMs->reference;
+    times.totalMs += r.timingsMs->total;
     ++times.tasks;
   }
   return times;
@@ -260,7 +276,7 @@ AdmissibleRecord AdmissibleRecord::fromJson(const Json& json) {
 Json slowestTests(const std::vector<TestRecord>& tests) {
   std::vector<std::pair<double, std::string>> times;
   for (const TestRecord& t : tests)
-    if (t.timingsMs.is_object()) times.emplace_back(number(t.timingsMs, "total"), t.name);
+    if (t.timingsMs) times.emplace_back(t.timingsMs->total, t.name);
   std::sort(times.begin(), times.end(), std::greater<>());
   if (times.size() > 10) times.resize(10);
   Json slowest = Json::array();

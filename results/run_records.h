@@ -13,13 +13,42 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace results {
 
 using Json = nlohmann::ordered_json;
+
+// Where a task's time went, in milliseconds (results.json "timings_ms"): the
+// worker's stages, then their total.
+struct StageTimes {
+  double reference = 0;
+  double pipeline = 0;
+  double draw = 0;
+  double readback = 0;
+  double compare = 0;
+  double total = 0;
+
+  // Every field with its key, in results.json's order: the one spelling of
+  // the stage names, which the writer, the reader and the reports' table use.
+  static constexpr std::array<std::pair<double StageTimes::*, const char*>, 6> kFields = {{
+      {&StageTimes::reference, "reference"},
+      {&StageTimes::pipeline, "pipeline"},
+      {&StageTimes::draw, "draw"},
+      {&StageTimes::readback, "readback"},
+      {&StageTimes::compare, "compare"},
+      {&StageTimes::total, "total"},
+  }};
+  Json toJson() const;
+  // null (a task that never reported times) or anything but an object:
+  // nullopt; a stage that is missing or no number reads as 0.
+  static std::optional<StageTimes> fromJson(const Json& json);
+};
 
 // What a task's comparison came to, as a worker reports it and as a test's
 // record keeps it.
@@ -28,7 +57,7 @@ struct TaskOutcome {
   Json metrics = nullptr;
   Json frames = nullptr;
   Json poppingScore = nullptr;
-  Json timingsMs = nullptr;  // the stage times: reference, pipeline, draw, readback, compare, total
+  std::optional<StageTimes> timingsMs;  // none for a Crash, Timeout, NotSupported or NotRun
   Json evidence = nullptr;
 };
 

@@ -1,6 +1,7 @@
 #include "runner/run_merge.h"
 
 #include "results/result_rules.h"
+#include "results/results_file.h"
 #include "results/run_records.h"
 #include "runner/backend_combination.h"
 #include "runner/evidence_limit.h"
@@ -47,25 +48,16 @@ int shardField(const RunRecord& run, const char* key) {
 
 Shard readShard(const fs::path& dir) {
   const fs::path file = dir / "results.json";
-  std::ifstream in(file);
-  if (!in) throw MergeRefused(dir.string() + ": no results.json (the shard did not finish, or this is not a run folder)");
-  Json json;
-  try {
-    json = Json::parse(in);
-  } catch (const Json::parse_error& e) {
-    throw MergeRefused(file.string() + ": not JSON: " + e.what());
-  }
-  if (!json.is_object()) throw MergeRefused(file.string() + ": not a lightcts results.json");
-  if (!json.contains("shard") || !json["shard"].is_object())
-    throw MergeRefused(file.string() + ": not a shard (a run without --shard I/N); there is nothing to merge it with");
-  for (const char* key : {"tests", "backends", "mutants"})
-    if (!json.contains(key) || !json[key].is_array()) throw MergeRefused(file.string() + ": no \"" + key + "\" array");
+  if (!fs::exists(file))
+    throw MergeRefused(dir.string() + ": no results.json (the shard did not finish, or this is not a run folder)");
   Shard shard{dir, {}, 0, 0};
   try {
-    shard.run = RunRecord::fromJson(json);
-  } catch (const std::invalid_argument& e) {
-    throw MergeRefused(file.string() + ": " + e.what());
+    shard.run = results::readResultsFile(file);  // a key missing: refused, naming it
+  } catch (const results::ResultsFileError& e) {
+    throw MergeRefused(e.what());
   }
+  if (!shard.run.isShard())
+    throw MergeRefused(file.string() + ": not a shard (a run without --shard I/N); there is nothing to merge it with");
   shard.index = shardField(shard.run, "index");
   shard.total = shardField(shard.run, "total");
   return shard;

@@ -1,6 +1,7 @@
 #include "runner/run_plan.h"
 
 #include "baking/sha256.h"
+#include "results/results_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,24 +33,15 @@ ShardSpec parseShard(const std::string& text) {
 }
 
 Timings loadTimings(const std::string& resultsFile) {
-  std::ifstream in(resultsFile);
-  if (!in) throw std::invalid_argument("--timings: cannot read " + resultsFile);
-  nlohmann::json results;
+  results::RunRecord run;
   try {
-    results = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw std::invalid_argument("--timings " + resultsFile + ": not JSON: " + e.what());
+    run = results::readResultsFile(resultsFile);
+  } catch (const results::ResultsFileError& e) {
+    throw std::invalid_argument(std::string("--timings ") + e.what());
   }
-  if (!results.is_object() || results.value("format", "") != "lightcts-results" || !results["tests"].is_array())
-    throw std::invalid_argument("--timings " + resultsFile + ": not a lightcts results.json");
   Timings timings;
-  for (const auto& test : results["tests"]) {
-    if (!test.is_object() || !test["name"].is_string() || !test["timings_ms"].is_object()) continue;
-    const auto& ms = test["timings_ms"];
-    if (!ms["total"].is_number()) continue;
-    timings[test["name"].get<std::string>()] = {ms["total"].get<double>(),
-                                                 ms["reference"].is_number() ? ms["reference"].get<double>() : 0.0};
-  }
+  for (const results::TestRecord& test : run.tests)
+    if (test.timingsMs) timings[test.name] = {test.timingsMs->total, test.timingsMs->reference};
   return timings;
 }
 

@@ -44,8 +44,9 @@ struct TestTiming {
   double referenceMs = 0;
 };
 using Timings = std::map<std::string, TestTiming>;
-// Throws std::invalid_argument when the file cannot be read or is not a
-// lightcts results.json.
+// Read by results/results_file.h: throws std::invalid_argument "--timings
+// FILE: what" when it refuses the file (unreadable, not JSON, not a lightcts
+// results.json, a key missing: the message names it).
 Timings loadTimings(const std::string& resultsFile);
 
 // The estimated cost of a unit: with timings, its model test's time plus, per

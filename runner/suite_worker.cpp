@@ -224,8 +224,7 @@ class Worker {
     result.frames = framesJson(check);
     result.poppingScore = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
     const conformance::StageTimings& t = check.timings;
-    result.timingsMs = {{"reference", t.reference}, {"pipeline", t.pipeline}, {"draw", t.draw},
-                        {"readback", t.readback},   {"compare", t.compare},   {"total", t.total}};
+    result.timingsMs = results::StageTimes{t.reference, t.pipeline, t.draw, t.readback, t.compare, t.total};
     result.evidence = nullptr;
     // Every failing test leaves evidence; a mutant leaves it for its first
     // kill; an expect_fail scene whose known mismatch was detected leaves it

@@ -186,7 +186,7 @@ add_run_compare_test(crash-to-pass-is-a-fix 0 ${compare_crash} ${compare_base} "
 add_run_compare_test(missing-file-exits-2 2 ${run_out}/no-such-run/results.json ${compare_base} ""
   "cannot read .*no-such-run/results.json" run-compare-base)
 add_run_compare_test(not-a-results-file-exits-2 2 ${CMAKE_CURRENT_SOURCE_DIR}/bad-scenes/typo-in-range.json
-  ${compare_base} "" "typo-in-range.json: no \"format\": not a lightcts results.json" run-compare-base)
+  ${compare_base} "" "typo-in-range.json: not a lightcts results.json" run-compare-base)
 # `run` has a subcommand now, so its --out is checked by `run` (not the parser):
 # still exit 2 without it, and nothing runs.
 add_test(NAME run.compare.run-without-out-still-exits-2

@@ -154,4 +154,33 @@ TEST_F(CommandsTest, UnwritableOutputExitsTwo) {
 }
 
 }  // namespace
+// A hand-edited results.json with a key missing, given where lightcts reads
+// a person's results.json: refused (exit 2) with the key's path, never a crash.
+const char* kResultsWithoutATestsName = R"({"format": "lightcts-results", "version": 1,
+  "backends": [{"backend": "vulkan", "status": "ran"}],
+  "tests": [{"name": "g.a.vulkan", "backend": "vulkan", "verdict": "Pass"},
+            {"backend": "vulkan", "verdict": "Pass", "timings_ms": {"total": 3}}]})";
+
+TEST_F(CommandsTest, RunCompareRefusesAResultsFileWithAKeyMissing) {
+  const std::string broken = (dir_ / "results.json").string();
+  std::ofstream(broken) << kResultsWithoutATestsName;
+  EXPECT_EQ(app::runRunCompareCommand(broken, broken, (dir_ / "page").string(), out_, err_), app::kExitBadInput);
+  EXPECT_NE(err_.str().find(broken + ": tests[1].name is missing"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "page"));
+}
+
+TEST_F(CommandsTest, RunTimingsRefusesAResultsFileWithAKeyMissing) {
+  const std::string broken = (dir_ / "results.json").string();
+  std::ofstream(broken) << kResultsWithoutATestsName;
+  runner::RunOptions options;
+  options.scenesDir = std::string(LIGHTCTS_SOURCE_DIR) + "/app/tests/scenes";
+  options.backends = {"vulkan"};
+  options.outDir = (dir_ / "run").string();
+  options.shard = runner::ShardSpec{1, 2};
+  options.timingsFile = broken;
+  EXPECT_EQ(app::runSuiteCommand(options, out_, err_), app::kExitBadInput);
+  EXPECT_NE(err_.str().find("--timings " + broken + ": tests[1].name is missing"), std::string::npos) << err_.str();
+  EXPECT_FALSE(fs::exists(dir_ / "run"));
+}
+
 }  // namespace app

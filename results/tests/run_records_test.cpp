@@ -25,7 +25,7 @@ RunRecord sampleRun() {
   t.verdict = Verdict::Flake;
   t.rawVerdict = Verdict::Fail;
   t.metrics = {{"tightness", 1.5}};
-  t.timingsMs = {{"total", 12.0}};
+  t.timingsMs = StageTimes{2.0, 3.0, 4.0, 1.0, 1.0, 12.0};
   t.attempts = {{Verdict::Fail, "past tolerance", "logs/vulkan.log"}, {Verdict::Pass, "", "logs/vulkan.retry-1.log"}};
   run.tests.push_back(t);
   BackendRecord b;
@@ -102,7 +102,7 @@ TEST(RunRecords, SlowestAreTheTenLongestTestsLongestFirst) {
   std::vector<TestRecord> tests(12);
   for (int i = 0; i < 12; ++i) {
     tests[std::size_t(i)].name = "t" + std::to_string(i);
-    tests[std::size_t(i)].timingsMs = {{"total", double(i)}};
+    tests[std::size_t(i)].timingsMs = StageTimes{0, 0, 0, 0, 0, double(i)};
   }
   const Json slowest = slowestTests(tests);
   ASSERT_EQ(slowest.size(), 10u);

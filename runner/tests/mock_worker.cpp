@@ -74,8 +74,7 @@ void emitResult(std::size_t index, const std::string& test, comparison::Verdict 
   result.test = test;
   result.rawVerdict = verdict;
   result.metrics = {{"compared_pixels", 16}, {"failing_pixels", verdict == comparison::Verdict::Fail ? 3 : 0}};
-  result.timingsMs = {{"reference", 1.0}, {"pipeline", 1.0}, {"draw", 1.0}, {"readback", 1.0}, {"compare", 1.0},
-                      {"total", 5.0 + double(index)}};
+  result.timingsMs = results::StageTimes{1.0, 1.0, 1.0, 1.0, 1.0, 5.0 + double(index)};
   Json line = {{protocol::kKind, protocol::kResult}, {protocol::kIndex, index}};
   line.update(result.toJson());
   emit(line);

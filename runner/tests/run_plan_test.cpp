@@ -64,9 +64,10 @@ TEST(RunPlan, CostsByCountOrByTimings) {
 
 TEST(RunPlan, TimingsComeFromAResultsFile) {
   const auto file = std::filesystem::temp_directory_path() / "lightcts-run-plan-timings.json";
-  std::ofstream(file) << R"({"format": "lightcts-results", "tests": [)"
-                         R"({"name": "a.x.vulkan", "timings_ms": {"total": 12.5, "reference": 2}},)"
-                         R"({"name": "a.y.vulkan", "timings_ms": null}]})";
+  std::ofstream(file) << R"({"format": "lightcts-results", "backends": [], "tests": [)"
+                         R"({"name": "a.x.vulkan", "backend": "vulkan", "verdict": "Pass",)"
+                         R"( "timings_ms": {"total": 12.5, "reference": 2}},)"
+                         R"({"name": "a.y.vulkan", "backend": "vulkan", "verdict": "Crash", "timings_ms": null}]})";
   const Timings timings = loadTimings(file.string());
   ASSERT_EQ(timings.size(), 1u);
   EXPECT_EQ(timings.at("a.x.vulkan").totalMs, 12.5);

@@ -120,6 +120,17 @@ TEST_F(SuiteRun, ShardsMergeIntoTheWholeRunAndTheMergeRefusesAShardTwice) {
                MergeRefused);
   EXPECT_THROW(mergeRuns({{(dir_ / "shard-2").string()}, (dir_ / "alone").string(), "merge", ""}, out), MergeRefused);
   EXPECT_FALSE(fs::exists(dir_ / "twice" / "results.json"));
+  // A shard's results.json edited by hand, a key missing: refused, naming the key.
+  Json edited = results("shard-2");
+  edited["tests"][0].erase("verdict");
+  std::ofstream(dir_ / "shard-2" / "results.json") << edited.dump(1);
+  try {
+    mergeRuns({{(dir_ / "shard-1").string(), (dir_ / "shard-2").string()}, (dir_ / "edited").string(), "merge", ""}, out);
+    ADD_FAILURE() << "merged a shard without a verdict";
+  } catch (const MergeRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("shard-2/results.json: tests[0].verdict is missing"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(SuiteRun, AnInterruptedShardMergesAndItsNotRunTestsFailTheMergedRun) {
