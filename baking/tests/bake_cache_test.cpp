@@ -34,7 +34,7 @@ class BakeCacheTest : public ::testing::Test {
     Scene s;
     s.objects.push_back(lightmappedPlane(4, 4, 8));
     s.objects.push_back(box({1, 1, 1}, {0, 1, 0}));
-    Light baked = pointLight({0.5, 3, 0.5}, 6, LightMode::Baked, {1, 0.5, 0.2}, 2);
+    Light baked = pointLight({0.5, 3, 0.5}, 6, 2, LightMode::Baked, {1, 0.5, 0.2});
     baked.shadows = true;
     s.lights.push_back(baked);
     s.lights.push_back(mixedShadowed({-1, 2, 0}, 5, 1));

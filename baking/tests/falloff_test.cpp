@@ -34,7 +34,7 @@ void expectTexelRgb(const Scene& s, double r, double g, double b) {
 // Light at (0.5, 2, 0.5): ray = (1, 2, 0), distSqr = 5, d = sqrt(5),
 // N.L = 2 / sqrt(5). finalColor = (1, 0.5, 0.25) * 2.
 Light bakedPoint(double range, lighting::BakeFalloff falloff) {
-  Light l = pointLight({0.5, 2, 0.5}, range, LightMode::Baked, {1, 0.5, 0.25}, 2);
+  Light l = pointLight({0.5, 2, 0.5}, range, 2, LightMode::Baked, {1, 0.5, 0.25});
   l.bakeFalloff = falloff;
   return l;
 }
@@ -116,7 +116,7 @@ TEST(BakeFalloff, SpotLightWithoutInnerAngleUsesTheLegacyRule) {
 TEST(BakeFalloff, DirectionalLightHasNoFalloff) {
   // Travelling along (0, -1, -1)/sqrt(2): L = (0, 1, 1)/sqrt(2), N.L = 1/sqrt(2),
   // the same on every texel.
-  Scene s = planeWith(directionalLight({0, -1, -1}, LightMode::Baked, {0.5, 1, 2}, 3));
+  Scene s = planeWith(directionalLight(3, {0, -1, -1}, LightMode::Baked, {0.5, 1, 2}));
   const double e = 3 / std::sqrt(2.0);
   expectTexelRgb(s, 0.5 * e, e, 2 * e);
   const auto baked = bakeUncached(s);
@@ -125,12 +125,12 @@ TEST(BakeFalloff, DirectionalLightHasNoFalloff) {
 
 TEST(BakeFalloff, LightOnTheTexelStaysFinite) {
   // At q itself: distSqr clamps to 1e-5 and L = 0, so N.L = 0 and E = 0.
-  Light on = pointLight({-0.5, 0, 0.5}, 5, LightMode::Baked);
+  Light on = pointLight({-0.5, 0, 0.5}, 5, 1, LightMode::Baked);
   on.shadows = true;
   expectTexelRgb(planeWith(on), 0, 0, 0);
   // 1e-4 above q: distSqr = 1e-8 clamps to 1e-5, L = (0, 1e-4, 0) / sqrt(1e-5),
   // rangeAtt = (1 - (1e-5/25)^2)^2.
-  Light above = pointLight({-0.5, 1e-4, 0.5}, 5, LightMode::Baked);
+  Light above = pointLight({-0.5, 1e-4, 0.5}, 5, 1, LightMode::Baked);
   const double nl = 1e-4 / std::sqrt(1e-5);
   const double rangeAtt = std::pow(1 - std::pow(1e-5 / 25, 2), 2);
   const double e = nl * rangeAtt / 1e-5;
@@ -143,7 +143,7 @@ TEST(BakeFalloff, LightOnTheTexelStaysFinite) {
 
 TEST(BakeFalloff, HugeIntensityIsClampedToTheLargestFloat) {
   // 1e38 * 1e5 overflows float: stored as FLT_MAX, never infinity.
-  Light l = pointLight({-0.5, 1e-4, 0.5}, 5, LightMode::Baked, {1, 1, 1}, 1e38);
+  Light l = pointLight({-0.5, 1e-4, 0.5}, 5, 1e38, LightMode::Baked);
   const auto baked = bakeUncached(planeWith(l));
   EXPECT_EQ(texel(baked->objects[0].lightmap, kI, kJ, 0), std::numeric_limits<float>::max());
 }

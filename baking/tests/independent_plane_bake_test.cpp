@@ -91,7 +91,7 @@ TEST(IndependentPlaneBake, InverseSquaredPointMatchesSpecAtEveryTexelCentre) {
     const double range = 5, intensity = 2.5;
     Scene s;
     s.objects.push_back(plane);
-    s.lights.push_back(pointLight({lightPos.x, lightPos.y, lightPos.z}, range, LightMode::Baked, {1, 1, 1}, intensity));
+    s.lights.push_back(pointLight({lightPos.x, lightPos.y, lightPos.z}, range, intensity, LightMode::Baked));
     const auto baked = bakeUncached(s);
     const lighting::TexelMap& map = baked->objects[0].lightmap;
     ASSERT_EQ(map.resolution, p.n);

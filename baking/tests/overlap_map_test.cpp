@@ -16,16 +16,16 @@ TEST(OverlapMap, CountsCandidatesWithinRange) {
   // (d = 0.5) and not texel (1, 0) (d^2 = 1.25).
   for (int k = 0; k < 5; ++k) s.lights.push_back(mixedShadowed({-1.5, 0.5, -1.5}, 1, 1 + k));
   // Not candidates: realtime, mixed without shadows, mixed with strength 0, baked.
-  s.lights.push_back(pointLight({-1.5, 0.5, -1.5}, 1, LightMode::Realtime));
+  s.lights.push_back(pointLight({-1.5, 0.5, -1.5}, 1, 1, LightMode::Realtime));
   Light noShadows = mixedShadowed({-1.5, 0.5, -1.5}, 1, 1);
   noShadows.shadows = false;
   s.lights.push_back(noShadows);
   Light noStrength = mixedShadowed({-1.5, 0.5, -1.5}, 1, 1);
   noStrength.shadowStrength = 0;
   s.lights.push_back(noStrength);
-  s.lights.push_back(pointLight({-1.5, 0.5, -1.5}, 1, LightMode::Baked));
+  s.lights.push_back(pointLight({-1.5, 0.5, -1.5}, 1, 1, LightMode::Baked));
   // A mixed shadowed directional light reaches every texel.
-  Light sun = directionalLight({0, -1, 0}, LightMode::Mixed, {1, 1, 1}, 1);
+  Light sun = directionalLight(1, {0, -1, 0}, LightMode::Mixed);
   sun.shadows = true;
   s.lights.push_back(sun);
 

@@ -22,7 +22,7 @@ Scene planeAndBox() {
 
 TEST(BakeShadows, BoxOccluderBlocksABakedLightUnderIt) {
   Scene s = planeAndBox();
-  Light l = pointLight({0, 4, 0}, 20, LightMode::Baked);
+  Light l = pointLight({0, 4, 0}, 20, 1, LightMode::Baked);
   l.shadows = true;
   s.lights.push_back(l);
   const auto baked = bakeUncached(s);
@@ -50,7 +50,7 @@ TEST(BakeShadows, BackFacesBlockToo) {
   roof.transform.translate = {0, 1, 0};
   roof.transform.rotateDeg = {180, 0, 0};
   s.objects.push_back(roof);
-  Light l = directionalLight({0, -1, 0}, LightMode::Baked, {1, 1, 1}, 1);
+  Light l = directionalLight(1, {0, -1, 0}, LightMode::Baked);
   l.shadows = true;
   s.lights.push_back(l);
   const auto baked = bakeUncached(s);
@@ -62,7 +62,7 @@ TEST(BakeShadows, DirectionalShadowReachesToInfinity) {
   // The box is 1 unit up; a directional light is blocked however far away
   // its source would be.
   Scene s = planeAndBox();
-  Light l = directionalLight({0, -1, 0}, LightMode::Baked, {1, 1, 1}, 2);
+  Light l = directionalLight(2, {0, -1, 0}, LightMode::Baked);
   l.shadows = true;
   s.lights.push_back(l);
   const auto baked = bakeUncached(s);
@@ -141,7 +141,7 @@ TEST(BakedLights, DemotedMixedLightIsBakedRealtimeAndKeptMixedAreNot) {
   Scene s;
   s.objects.push_back(lightmappedPlane(4, 4, 4));
   for (int k = 0; k < 5; ++k) s.lights.push_back(mixedShadowed({0.5, 2, 0.5}, 5, 5 - k));
-  s.lights.push_back(pointLight({-0.5, 1, 0.5}, 5, LightMode::Realtime, {1, 1, 1}, 100));
+  s.lights.push_back(pointLight({-0.5, 1, 0.5}, 5, 100, LightMode::Realtime));
   const auto prepared = lighting::prepareScene(s);
   ASSERT_TRUE(prepared->shadowMask.demotedLight[4]);
   for (int k = 0; k < 4; ++k) ASSERT_FALSE(prepared->shadowMask.demotedLight[std::size_t(k)]);
@@ -156,10 +156,10 @@ TEST(BakedLights, DemotedMixedLightIsBakedRealtimeAndKeptMixedAreNot) {
 
 TEST(BakeDeterminism, OneThreadAndTwoThreadsGiveIdenticalBits) {
   Scene s = twoMixedLights();
-  Light sun = directionalLight({1, -2, 0.5}, LightMode::Baked, {1, 0.9, 0.8}, 0.7);
+  Light sun = directionalLight(0.7, {1, -2, 0.5}, LightMode::Baked, {1, 0.9, 0.8});
   sun.shadows = true;
   s.lights.push_back(sun);
-  Light spot = pointLight({-2, 3, 1}, 9, LightMode::Baked, {0.2, 1, 0.4}, 3);
+  Light spot = pointLight({-2, 3, 1}, 9, 3, LightMode::Baked, {0.2, 1, 0.4});
   spot.type = LightType::Spot;
   spot.direction = glm::normalize(Vec3(0.3, -1, 0));
   spot.shadows = true;

@@ -1,11 +1,10 @@
-// Small scenes for the baker's tests, built in code. Lights are built
-// directly (not through the loader), so directions are normalised here.
+// Small scenes for the baker's tests, built in code (the lights by
+// lighting/tests/light_builders.h).
 #pragma once
 
 #include "baking/bake.h"
 #include "lighting/scene.h"
-
-#include <glm/geometric.hpp>
+#include "lighting/tests/light_builders.h"
 
 #include <filesystem>
 #include <string>
@@ -18,6 +17,8 @@ using lighting::LightType;
 using lighting::Object;
 using lighting::Scene;
 using lighting::Vec3;
+using lighting::testing::directionalLight;
+using lighting::testing::pointLight;
 
 inline Object lightmappedPlane(double sizeX, double sizeZ, int resolution) {
   Object o;
@@ -39,33 +40,10 @@ inline Object box(Vec3 size, Vec3 translate) {
   return o;
 }
 
-inline Light pointLight(Vec3 position, double range, LightMode mode, Vec3 color = {1, 1, 1}, double intensity = 1) {
-  Light l;
-  l.name = "point";
-  l.type = LightType::Point;
-  l.position = position;
-  l.range = range;
-  l.mode = mode;
-  l.color = color;
-  l.intensity = intensity;
-  return l;
-}
-
 inline Light mixedShadowed(Vec3 position, double range, double intensity) {
-  Light l = pointLight(position, range, LightMode::Mixed, {1, 1, 1}, intensity);
+  Light l = pointLight(position, range, intensity, LightMode::Mixed);
   l.shadows = true;
   l.shadowStrength = 1;
-  return l;
-}
-
-inline Light directionalLight(Vec3 direction, LightMode mode, Vec3 color, double intensity) {
-  Light l;
-  l.name = "sun";
-  l.type = LightType::Directional;
-  l.direction = glm::normalize(direction);
-  l.mode = mode;
-  l.color = color;
-  l.intensity = intensity;
   return l;
 }
 

@@ -4,6 +4,7 @@
 // volume, every face is wound counter-clockwise seen from outside, and the
 // directional triangle covers clip [-1, 1]^2.
 #include "lighting/deferred_lights.h"
+#include "lighting/tests/light_builders.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -15,6 +16,8 @@
 
 namespace lighting {
 namespace {
+
+using testing::directionalLight;
 
 // Far from the origin, so the camera-relative subtraction matters (SPEC 7).
 const Vec3 kFar(1e5, 0, -2e5);
@@ -34,13 +37,6 @@ Light spotLight(const Vec3& position, const Vec3& direction, double range, doubl
   l.direction = glm::normalize(direction);
   l.range = range;
   l.spotAngleDeg = fullAngleDeg;
-  return l;
-}
-
-Light directionalLight() {
-  Light l;
-  l.type = LightType::Directional;
-  l.direction = {0, -1, 0};
   return l;
 }
 

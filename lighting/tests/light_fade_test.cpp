@@ -5,11 +5,16 @@
 #include "lighting/gpu_packing.h"
 #include "lighting/light_fade.h"
 #include "lighting/selection_json.h"
+#include "lighting/tests/light_builders.h"
 
 #include <gtest/gtest.h>
 
 namespace lighting {
 namespace {
+
+using testing::directionalLight;
+using testing::frameOf;
+using testing::pointLight;
 
 TEST(FadeWeight, LinearInSquaredDistanceBetweenStartAndCut) {
   EXPECT_EQ(fadeWeight(5, 4, 8), 0.75);  // (8 - 5) / (8 - 4)
@@ -43,21 +48,6 @@ TEST(FadeWeights, NothingFadesWithoutADroppedLightOrWithNZero) {
   EXPECT_TRUE(fadeWeights({}, 25.0, 2).empty());
 }
 
-Light pointLight(Vec3 position, double range = 1) {
-  Light l;
-  l.type = LightType::Point;
-  l.position = position;
-  l.range = range;
-  return l;
-}
-
-Light directionalLight(double intensity) {
-  Light l;
-  l.type = LightType::Directional;
-  l.intensity = intensity;
-  return l;
-}
-
 // SPEC 2's default camera (orthographic, at (0, 10, 0) looking down, height
 // 10): light k at (0, 9 - k/8, 0) sits d = 1 + k/8 = (8 + k)/8 below it, so
 // d^2 = (8 + k)^2 / 64 exactly; the frustum holds y <= 9.9 and |x|, |z| <= 5.
@@ -72,7 +62,6 @@ Scene lineOfLights(int count, int fade, Profile profile = Profile::Srp) {
   return s;
 }
 
-Frame frameOf(Scene s, int index = 0) { return prepareFrame(prepareScene(std::move(s)), index); }
 
 TEST(FadeSelection, SixtyFiveOnALineFadeTheLastEight) {
   // Kept k = 0..63, cut at k = 64: d = 9, d^2 = 81 = 5184/64. N = 8: start is
@@ -163,7 +152,7 @@ TEST(FadeSelection, PackedColourIsFinalColourTimesTheWeight) {
   EXPECT_EQ(block.otherLights[63].color.x, float(3 * w));
   EXPECT_EQ(block.otherLights[63].color.y, float(1.5 * w));
   EXPECT_EQ(block.otherLights[63].color.z, float(0.75 * w));
-  EXPECT_EQ(block.otherLights[0].color.x, 2.0f);  // default colour 1, intensity 2, weight 1
+  EXPECT_EQ(block.otherLights[0].color.x, 1.0f);  // colour 1, the builder's intensity 1, weight 1
 }
 
 TEST(FadeSelection, LightsJsonShowsTheWeightOnlyWhenTheSceneFades) {

@@ -1,6 +1,7 @@
 // SPEC 5.1-5.3 on small scenes whose answers are derived by hand in the
 // comments. Scenes are built in code so the test does not depend on the loader.
 #include "lighting/frame.h"
+#include "lighting/tests/light_builders.h"
 
 #include <gtest/gtest.h>
 
@@ -9,21 +10,9 @@
 namespace lighting {
 namespace {
 
-Light pointLight(Vec3 position, double range, double intensity = 1) {
-  Light l;
-  l.type = LightType::Point;
-  l.position = position;
-  l.range = range;
-  l.intensity = intensity;
-  return l;
-}
-
-Light directionalLight(double intensity) {
-  Light l;
-  l.type = LightType::Directional;
-  l.intensity = intensity;
-  return l;
-}
+using testing::directionalLight;
+using testing::frameOf;
+using testing::pointLight;
 
 // The default camera of SPEC 2: orthographic, at (0, 10, 0) looking down with
 // height 10 and a square image, so the frustum is |x| <= 5, |z| <= 5,
@@ -37,7 +26,6 @@ Scene sceneWith(std::vector<Light> lights) {
   return s;
 }
 
-Frame frameOf(Scene s, int index = 0) { return prepareFrame(prepareScene(std::move(s)), index); }
 
 std::vector<std::pair<int, int>> visible(const Frame& f) {
   std::vector<std::pair<int, int>> out;

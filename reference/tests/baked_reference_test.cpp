@@ -4,6 +4,7 @@
 // lights (`"expect": {"against": "realtime"}`). Maps are made by hand and
 // attached with baking::withBake; expected values are derived in the comments.
 #include "baking/bake.h"
+#include "lighting/tests/light_builders.h"
 #include "reference/baked_lights_realtime.h"
 #include "reference/reference_renderer.h"
 
@@ -16,6 +17,7 @@ namespace reference {
 namespace {
 
 using namespace lighting;
+using lighting::testing::pointLight;
 
 // The default camera: orthographic, 10 m high, from (0, 10, 0) looking down
 // with up = -Z. With a W-pixel square image, column i sees x = -5 + (i + 0.5) 10/W
@@ -59,16 +61,6 @@ std::shared_ptr<const PreparedScene> withMaps(const Scene& s, int object, TexelM
 ReferenceImages render(std::shared_ptr<const PreparedScene> prepared, ReferenceOptions options = {}) {
   options.threads = 2;
   return ReferenceRenderer(prepared).render(prepareFrame(prepared, 0), options);
-}
-
-Light pointLight(Vec3 position, double range, double intensity, LightMode mode = LightMode::Realtime) {
-  Light l;
-  l.type = LightType::Point;
-  l.position = position;
-  l.range = range;
-  l.intensity = intensity;
-  l.mode = mode;
-  return l;
 }
 
 Light mixedShadowedDirectional(double intensity) {

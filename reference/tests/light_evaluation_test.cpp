@@ -2,6 +2,8 @@
 // of its error bound.
 #include "reference/light_evaluation.h"
 
+#include "lighting/tests/light_builders.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,21 +12,12 @@ namespace reference {
 namespace {
 
 using namespace lighting;
+using lighting::testing::pointLight;
 
 Scene oneLight(Light light) {
   Scene s;
   s.lights.push_back(light);
   return s;
-}
-
-Light point(Vec3 position, double range, Vec3 color = {1, 1, 1}, double intensity = 1) {
-  Light l;
-  l.type = LightType::Point;
-  l.position = position;
-  l.range = range;
-  l.color = color;
-  l.intensity = intensity;
-  return l;
 }
 
 LightSum evaluate(const Scene& s, Vec3 p, Vec3 n) {
@@ -36,7 +29,7 @@ LightSum evaluate(const Scene& s, Vec3 p, Vec3 n) {
 
 TEST(LightEvaluation, PointLightStraightAbove) {
   // d = 1, range 2: rangeAtt = (1 - (1/4)^2)^2 = (15/16)^2; N.L = 1; / d^2 = 1.
-  const Scene s = oneLight(point({0, 1, 0}, 2, {1, 0.5, 0.25}, 2));
+  const Scene s = oneLight(pointLight({0, 1, 0}, 2, 2, LightMode::Realtime, {1, 0.5, 0.25}));
   const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
   EXPECT_DOUBLE_EQ(sum.value.r, 2 * 0.87890625);
   EXPECT_DOUBLE_EQ(sum.value.g, 1 * 0.87890625);
@@ -50,7 +43,7 @@ TEST(LightEvaluation, AFadeWeightScalesTheValueAndTheBound) {
   // so value and bound both scale by the weight (these colours are powers of
   // two), and weight 0 gives exactly 0 with no bound but the flush floor of
   // its operations.
-  const Scene s = oneLight(point({0, 1, 0}, 2, {1, 0.5, 0.25}, 2));
+  const Scene s = oneLight(pointLight({0, 1, 0}, 2, 2, LightMode::Realtime, {1, 0.5, 0.25}));
   const PositionContext where{{0, 10, 0}, 10};
   LightSum plain, quarter, zero;
   LightEvaluator(s, s.pipeline.profile).accumulate({0}, {0, 0, 0}, {0, 1, 0}, where, plain);
@@ -67,7 +60,7 @@ TEST(LightEvaluation, AFadeWeightScalesTheValueAndTheBound) {
 
 TEST(LightEvaluation, PointLightAtFortyFiveDegrees) {
   // Light at (1, 1, 0): d^2 = 2, N.L = 1/sqrt2, range 10: q = 2/100.
-  const Scene s = oneLight(point({1, 1, 0}, 10));
+  const Scene s = oneLight(pointLight({1, 1, 0}, 10));
   const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
   const double rangeAtt = std::pow(1 - 0.02 * 0.02, 2);
   EXPECT_NEAR(sum.value.r, rangeAtt / std::sqrt(2.0) / 2.0, 1e-15);
@@ -75,7 +68,7 @@ TEST(LightEvaluation, PointLightAtFortyFiveDegrees) {
 
 TEST(LightEvaluation, LightOnTheSurfacePointGivesZeroNotNaN) {
   // d = 0: distSqr clamps to 1e-5, L = 0, so saturate(dot(N, L)) = 0.
-  const Scene s = oneLight(point({3, 0, 4}, 5));
+  const Scene s = oneLight(pointLight({3, 0, 4}, 5));
   const LightSum sum = evaluate(s, {3, 0, 4}, {0, 1, 0});
   EXPECT_EQ(sum.value, Vec3(0.0));
   EXPECT_TRUE(std::isfinite(sum.errorBound.r));
@@ -85,7 +78,7 @@ TEST(LightEvaluation, SpotConeEdges) {
   // Spot straight down from height 1, outer 90 inner 0: a = 2 + sqrt2,
   // b = -(1 + sqrt2). Directly below: cos = 1 -> factor 1. At 45 degrees off
   // axis (the outer edge): 0.
-  Light spot = point({0, 1, 0}, 100);
+  Light spot = pointLight({0, 1, 0}, 100);
   spot.type = LightType::Spot;
   spot.direction = {0, -1, 0};
   spot.spotAngleDeg = 90;
@@ -117,7 +110,7 @@ TEST(LightEvaluation, DirectionalIsNDotLTimesColour) {
 // component) to first order, and the term, whose slope in d^2 is
 // -(1 + 4 g q^2 / ...) about -1.03 relative here, by at least 2 e relative.
 TEST(LightEvaluation, ErrorBoundIsTheOperationsAndThePositionsError) {
-  const Scene s = oneLight(point({0, 1, 0}, 4));
+  const Scene s = oneLight(pointLight({0, 1, 0}, 4));
   LightEvaluator e(s, s.pipeline.profile);
   const SurfaceErrors exactInputs{0.0, 0.0};
   PositionContext where{{0, 10, 0}, 10};
@@ -137,7 +130,7 @@ TEST(LightEvaluation, ErrorBoundIsTheOperationsAndThePositionsError) {
 TEST(LightEvaluation, ErrorBoundGrowsForALightInTheSurface) {
   // Light in the plane 0.05 away: exact N.L = 0, but float32 positions can
   // tilt L out of the plane; the bound must allow for it.
-  const Scene s = oneLight(point({0.05, 0, 0}, 4));
+  const Scene s = oneLight(pointLight({0.05, 0, 0}, 4));
   const LightSum sum = evaluate(s, {0, 0, 0}, {0, 1, 0});
   EXPECT_EQ(sum.value.r, 0.0);
   EXPECT_GT(sum.errorBound.r, 1e-6);
