@@ -92,7 +92,7 @@ Json shadowMaskJson(const lighting::PreparedScene& prepared) {
 // it is complete.
 int runBakeCommand(const BakeArguments& args, std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
-    auto prepared = lighting::prepareScene(lighting::loadSceneFile(args.scenePath));
+    auto prepared = lighting::prepareScene(scene_input::loadSceneFile(args.scenePath));
     if (!prepared->needsBake())
       throw InputError(args.scenePath +
                        ": nothing to bake: no object is static with lightmap_resolution > 0 (lightmaps are for "

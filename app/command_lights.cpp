@@ -14,14 +14,14 @@ namespace app {
 // a glTF file's scene as a scene file instead.
 int runLightsCommand(const SceneArguments& args, bool sceneJson, std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
-    if (sceneJson && !lighting::isGltfPath(args.scenePath))
+    if (sceneJson && !scene_input::isGltfPath(args.scenePath))
       throw InputError("--scene-json prints the scene of a glTF file (.gltf or .glb); " + args.scenePath +
                        " is a scene file already");
     const SceneInput input = loadSceneInput(args, /*bake=*/false);  // selection needs no maps
     if (sceneJson) {
       // Absolute: the output is meant to be saved anywhere.
       const std::string gltf = std::filesystem::absolute(args.scenePath).lexically_normal().string();
-      out << lighting::bareGltfSceneJson(input.prepared->scene, gltf).dump(2) << "\n";
+      out << scene_input::bareGltfSceneJson(input.prepared->scene, gltf).dump(2) << "\n";
       return kExitSuccess;
     }
     out << lighting::selectionToJson(input.frame).dump(2) << "\n";

@@ -16,7 +16,7 @@ namespace app {
 
 SceneInput loadSceneInput(const SceneArguments& args, bool bake) {
   SceneInput input;
-  lighting::Scene scene = lighting::loadSceneFile(args.scenePath);
+  lighting::Scene scene = scene_input::loadSceneFile(args.scenePath);
   // What an import ignored (SPEC 2.1) is said once, on stderr: stdout may
   // be a command's JSON.
   for (const std::string& warning : scene.warnings) std::cerr << "lightcts: warning: " << warning << "\n";
@@ -34,7 +34,7 @@ SceneInput loadSceneInput(const SceneArguments& args, bool bake) {
 int guardCommand(std::ostream& err, const std::function<int()>& body) {
   try {
     return body();
-  } catch (const lighting::SceneLoadError& e) {
+  } catch (const scene_input::SceneLoadError& e) {
     err << "lightcts: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const InputError& e) {

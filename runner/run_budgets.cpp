@@ -16,7 +16,7 @@ using Json = nlohmann::ordered_json;
 namespace {
 
 Json sceneBudget(const BudgetScene& scene, const fs::path& outDir) {
-  const auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(scene.file.string()));
+  const auto prepared = baking::prepareBakedScene(scene_input::loadSceneFile(scene.file.string()));
   const reference::ReferenceRenderer renderer(prepared);
   const int frames = prepared->scene.frames.count;
   Json summaries = Json::array();

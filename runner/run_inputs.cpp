@@ -15,7 +15,7 @@ namespace {
 std::vector<CatalogueEntry> loadCatalogue(const std::string& scenesDir) {
   std::vector<CatalogueEntry> catalogue;
   for (const conformance::SceneFile& file : conformance::findSceneFiles(scenesDir)) {
-    const lighting::Scene scene = lighting::loadSceneFile(file.path.string());
+    const lighting::Scene scene = scene_input::loadSceneFile(file.path.string());
     // An import's warnings (SPEC 2.1), once per run; the workers stay quiet.
     for (const std::string& warning : scene.warnings) std::cerr << "lightcts: warning: " << warning << "\n";
     catalogue.push_back({file, scene.description});

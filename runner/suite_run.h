@@ -78,7 +78,7 @@ struct RunOptions {
 // otherwise; 3 when no backend was present; 128 + the signal (130, 143)
 // when SIGINT or SIGTERM interrupted it (runner/run_interruption.h), with
 // the outputs written for the tests that finished.
-// Throws std::invalid_argument / lighting::SceneLoadError / std::runtime_error
+// Throws std::invalid_argument / scene_input::SceneLoadError / std::runtime_error
 // for bad input (the caller maps them to exit 2).
 int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err);
 

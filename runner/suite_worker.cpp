@@ -199,7 +199,7 @@ class Worker {
   conformance::SceneReferences& referencesOf(const std::string& scene) {
     auto it = references_.find(scene);
     if (it == references_.end()) {
-      auto prepared = baking::prepareBakedScene(lighting::loadSceneFile(scene));
+      auto prepared = baking::prepareBakedScene(scene_input::loadSceneFile(scene));
       auto caching = conformance::referenceCaching(plan_.referenceCache, scene, prepared->scene);
       it = references_.emplace(scene, std::make_unique<conformance::SceneReferences>(std::move(prepared), caching))
                .first;

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstring>
 
-namespace lighting {
+namespace scene_input {
+
+using namespace lighting;  // the model this folder reads scenes into
 namespace {
 
 constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
@@ -132,4 +134,4 @@ std::vector<std::uint32_t> GltfAccessors::readIndices(int accessor, std::size_t 
   return indices;
 }
 
-}  // namespace lighting
+}  // namespace scene_input

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 
 // The bytes of every buffer of the file, by buffer index.
 using GltfBuffers = std::vector<std::vector<unsigned char>>;
@@ -24,7 +24,7 @@ class GltfAccessors {
       : document_(document), buffers_(buffers), file_(std::move(file)) {}
 
   // A VEC3 FLOAT accessor (POSITION, NORMAL), every component finite.
-  std::vector<Vec3> readVec3(int accessor, const char* semantic) const;
+  std::vector<lighting::Vec3> readVec3(int accessor, const char* semantic) const;
   // A SCALAR UNSIGNED_BYTE/SHORT/INT accessor of vertex indices, each below `vertexCount`.
   std::vector<std::uint32_t> readIndices(int accessor, std::size_t vertexCount) const;
   // The accessor's `count` (the vertex count of an attribute).
@@ -45,4 +45,4 @@ class GltfAccessors {
   std::string file_;
 };
 
-}  // namespace lighting
+}  // namespace scene_input

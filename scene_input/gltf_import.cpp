@@ -24,7 +24,9 @@
 #include <numeric>
 #include <sstream>
 
-namespace lighting {
+namespace scene_input {
+
+using namespace lighting;  // the model this folder reads scenes into
 
 GltfError::GltfError(std::string file, std::string pointer, std::string message, TextPosition where)
     : std::runtime_error(file + ": " + (pointer.empty() ? "" : pointer + ": ") + message),
@@ -444,4 +446,4 @@ GltfContent importGltf(const GltfImportRequest& request) {
   return Importer(request, document, buffers).run(std::move(warnings));
 }
 
-}  // namespace lighting
+}  // namespace scene_input

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 
 // A fault of the glTF file, at an RFC 6901 pointer into its JSON ("" for the
 // whole file), and where its text is when the reader knows it (a syntax
@@ -48,8 +48,8 @@ struct GltfImportRequest {
 struct ImportedPrimitive {
   std::string name;               // "<node name or #index>/<primitive index>"
   std::string pointer;            // "/meshes/M/primitives/P"
-  std::shared_ptr<const Mesh> mesh;
-  Vec3 baseColor{1, 1, 1};        // baseColorFactor.rgb, clamped to [0, 1]
+  std::shared_ptr<const lighting::Mesh> mesh;
+  lighting::Vec3 baseColor{1, 1, 1};        // baseColorFactor.rgb, clamped to [0, 1]
   double metallic = 1;            // metallicFactor
   double roughness = 1;           // roughnessFactor
 };
@@ -59,10 +59,10 @@ struct ImportedPrimitive {
 struct ImportedLight {
   std::string name;               // the light's name, else "<node name or #index>"
   std::string pointer;            // "/extensions/KHR_lights_punctual/lights/L"
-  LightType type = LightType::Point;
-  Vec3 position{0, 0, 0};         // the node's world origin
-  Vec3 direction{0, 0, -1};       // normalize(world 3x3 * (0, 0, -1))
-  Vec3 color{1, 1, 1};
+  lighting::LightType type = lighting::LightType::Point;
+  lighting::Vec3 position{0, 0, 0};         // the node's world origin
+  lighting::Vec3 direction{0, 0, -1};       // normalize(world 3x3 * (0, 0, -1))
+  lighting::Vec3 color{1, 1, 1};
   double intensity = 1;
   std::optional<double> range;    // absent: the scene's light_defaults.range
   double spotAngleDeg = 90;       // 2 x outerConeAngle (default pi/4)
@@ -73,9 +73,9 @@ struct ImportedLight {
 // carries it). Perspective or orthographic, as glTF defines them.
 struct ImportedCamera {
   std::string pointer;            // "/cameras/C"
-  Vec3 position{0, 0, 0};
-  Vec3 forward{0, 0, -1};         // local -Z
-  Vec3 up{0, 1, 0};               // local +Y
+  lighting::Vec3 position{0, 0, 0};
+  lighting::Vec3 forward{0, 0, -1};         // local -Z
+  lighting::Vec3 up{0, 1, 0};               // local +Y
   bool perspective = true;
   double yfovRad = 0.8;           // perspective
   double ymag = 1;                // orthographic: half the view's height
@@ -88,7 +88,7 @@ struct GltfContent {
   std::vector<ImportedLight> lights;          // in node order
   std::vector<std::optional<ImportedCamera>> cameras;  // by camera index; empty when no node carries it
   std::vector<std::string> warnings;          // "FILE: /pointer: what was ignored"
-  Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};  // of every imported triangle (world space)
+  lighting::Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};  // of every imported triangle (world space)
   std::size_t triangles = 0;
 };
 
@@ -103,4 +103,4 @@ GltfContent importGltf(const GltfImportRequest& request);
 // such a file given as a scene is read as SPEC 2.1's bare import.
 bool isGltfPath(const std::string& path);
 
-}  // namespace lighting
+}  // namespace scene_input

@@ -10,7 +10,9 @@
 #include <set>
 #include <string_view>
 
-namespace lighting {
+namespace scene_input {
+
+using namespace lighting;  // the model this folder reads scenes into
 namespace {
 
 using Json = nlohmann::json;
@@ -415,4 +417,4 @@ void checkGltfJson(const Json& document, const std::string& file, std::vector<st
   ShapeChecker(document, file, warnings).check();
 }
 
-}  // namespace lighting
+}  // namespace scene_input

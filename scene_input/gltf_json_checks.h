@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 
 // Throws GltfError naming `file` and the JSON pointer of the first fault;
 // appends "FILE: /pointer: ..." warnings for faults in ignored content and
 // for content outside the model (textures, skins, other extensions).
 void checkGltfJson(const nlohmann::json& document, const std::string& file, std::vector<std::string>& warnings);
 
-}  // namespace lighting
+}  // namespace scene_input

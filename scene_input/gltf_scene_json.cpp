@@ -2,7 +2,9 @@
 
 #include "lighting/scene_words.h"
 
-namespace lighting {
+namespace scene_input {
+
+using namespace lighting;  // the model this folder reads scenes into
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -51,4 +53,4 @@ Json bareGltfSceneJson(const Scene& scene, const std::string& gltfPath) {
               {"lights", lights}};
 }
 
-}  // namespace lighting
+}  // namespace scene_input

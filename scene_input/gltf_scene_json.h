@@ -12,10 +12,10 @@
 
 #include <string>
 
-namespace lighting {
+namespace scene_input {
 
 // `scene` as loadSceneFile read the glTF file `gltfPath`, whose path the
 // import names as it is given.
-nlohmann::ordered_json bareGltfSceneJson(const Scene& scene, const std::string& gltfPath);
+nlohmann::ordered_json bareGltfSceneJson(const lighting::Scene& scene, const std::string& gltfPath);
 
-}  // namespace lighting
+}  // namespace scene_input

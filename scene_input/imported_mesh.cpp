@@ -8,7 +8,9 @@
 #include <numeric>
 #include <unordered_map>
 
-namespace lighting {
+namespace scene_input {
+
+using namespace lighting;  // the model this folder reads scenes into
 namespace {
 
 // A normal whose squared length is within this of 1 is kept as the file
@@ -191,4 +193,4 @@ std::vector<std::uint32_t> smoothPieces(const Mesh& mesh) {
   return piece;
 }
 
-}  // namespace lighting
+}  // namespace scene_input

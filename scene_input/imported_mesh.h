@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 
 // glTF 2.0 primitive modes that make triangles.
 enum class TriangleMode { Triangles = 4, Strip = 5, Fan = 6 };
@@ -25,8 +25,8 @@ enum class TriangleMode { Triangles = 4, Strip = 5, Fan = 6 };
 std::vector<glm::u32vec3> trianglesOf(TriangleMode mode, const std::vector<std::uint32_t>& indices);
 
 struct WorldPrimitive {
-  std::vector<Vec3> positions;             // world space
-  std::optional<std::vector<Vec3>> normals;  // world space, not yet normalised; absent: flat
+  std::vector<lighting::Vec3> positions;             // world space
+  std::optional<std::vector<lighting::Vec3>> normals;  // world space, not yet normalised; absent: flat
   std::vector<glm::u32vec3> triangles;     // counter-clockwise when seen from the front in the file's frame
   bool reverseWinding = false;             // the world matrix has a negative determinant
   bool doubleSided = false;
@@ -34,13 +34,13 @@ struct WorldPrimitive {
 
 // The mesh; `zeroNormals` counts vertices whose normal had no length (each
 // replaced by the normalised sum of its triangles' area-weighted normals).
-Mesh buildImportedMesh(WorldPrimitive primitive, std::size_t* zeroNormals = nullptr);
+lighting::Mesh buildImportedMesh(WorldPrimitive primitive, std::size_t* zeroNormals = nullptr);
 
 // Which smooth piece each triangle belongs to: triangles that meet at a point
 // with the same normal there (to 2^-30 in each component, wherever the
 // vertex is stored) are one piece,
 // numbered in the order of their first triangle. A box of six flat faces has
 // six, a sphere or a plane one.
-std::vector<std::uint32_t> smoothPieces(const Mesh& mesh);
+std::vector<std::uint32_t> smoothPieces(const lighting::Mesh& mesh);
 
-}  // namespace lighting
+}  // namespace scene_input

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace lighting {
+namespace scene_input {
 
 template <typename Json>
 std::string describeJsonType(const Json& value) {
@@ -30,4 +30,4 @@ std::string describeJsonTypeAndLength(const Json& value) {
   return "an array of " + std::to_string(value.size()) + (value.size() == 1 ? " value" : " values");
 }
 
-}  // namespace lighting
+}  // namespace scene_input

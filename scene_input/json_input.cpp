@@ -8,7 +8,7 @@
 #include <unordered_set>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 namespace {
 
 // nlohmann-json messages start "[json.exception.parse_error.101] parse error at
@@ -118,4 +118,4 @@ std::string NumberBounds::describe() const {
   return "";
 }
 
-}  // namespace lighting
+}  // namespace scene_input

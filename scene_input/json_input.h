@@ -21,7 +21,7 @@
 #include <string>
 #include <string_view>
 
-namespace lighting {
+namespace scene_input {
 
 // Where an input's JSON is wrong, and why. `where` is {0, 0} when the text
 // gives no place (an error of the parser without a position).
@@ -111,4 +111,4 @@ std::optional<std::string> kindProblem(const Json& value, JsonKind kind) {
   return std::string("expected ") + expected + ", got " + describeJsonType(value);
 }
 
-}  // namespace lighting
+}  // namespace scene_input

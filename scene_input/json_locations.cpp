@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace lighting {
+namespace scene_input {
 
 namespace {
 
@@ -248,4 +248,4 @@ std::string unescapeJsonPointerToken(std::string_view token) {
   return unescaped;
 }
 
-}  // namespace lighting
+}  // namespace scene_input

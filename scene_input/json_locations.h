@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 
 // 1-based line and column; the column counts characters (UTF-8 code points),
 // not bytes, so it matches what an editor shows. A tab counts as one.
@@ -49,4 +49,4 @@ std::string escapeJsonPointerToken(std::string_view token);
 // The reverse: "~1" -> "/" and "~0" -> "~".
 std::string unescapeJsonPointerToken(std::string_view token);
 
-}  // namespace lighting
+}  // namespace scene_input

@@ -35,7 +35,9 @@
 #include <tuple>
 #include <utility>
 
-namespace lighting {
+namespace scene_input {
+
+using namespace lighting;  // the model this folder reads scenes into
 
 std::string SceneError::format() const {
   std::string text = file;
@@ -1099,4 +1101,4 @@ Scene loadSceneFile(const std::string& path) {
   return loadSceneText(content.str(), path);
 }
 
-}  // namespace lighting
+}  // namespace scene_input

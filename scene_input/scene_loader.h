@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace lighting {
+namespace scene_input {
 
 struct SceneError {
   std::string file;      // as given by the caller
@@ -34,9 +34,9 @@ class SceneLoadError : public std::runtime_error {
 
 // Reads and validates a scene file; throws SceneLoadError (also for a missing or
 // unreadable file, with an empty JSON path).
-Scene loadSceneFile(const std::string& path);
+lighting::Scene loadSceneFile(const std::string& path);
 
 // Validates scene text; `sourceName` is used as the file name in messages.
-Scene loadSceneText(std::string_view text, const std::string& sourceName);
+lighting::Scene loadSceneText(std::string_view text, const std::string& sourceName);
 
-}  // namespace lighting
+}  // namespace scene_input

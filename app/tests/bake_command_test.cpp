@@ -97,7 +97,7 @@ TEST_F(BakeCommandTest, WritesMapsOverlapAndBakeJson) {
   // The EXRs hold exactly the baked texels.
   baking::BakeOptions noCache;
   noCache.useCache = false;
-  const auto baked = baking::bakeScene(*lighting::prepareScene(lighting::loadSceneFile(kFiveOverlapping)), noCache);
+  const auto baked = baking::bakeScene(*lighting::prepareScene(scene_input::loadSceneFile(kFiveOverlapping)), noCache);
   const lighting::ObjectBake& maps = baked->objects[0];
   const imaging::Image lightmap = imaging::readExr((out / "floor.lightmap.exr").string());
   const imaging::Image mask = imaging::readExr((out / "floor.shadowmask.exr").string());
@@ -199,7 +199,7 @@ TEST_F(BakeCommandTest, RepeatedNamesNeverShareFiles) {
 // lightmapped floor is reached at its centre by five mixed lights.
 TEST_F(BakeCommandTest, SuiteFifthOverlappingSceneShowsTheConflict) {
   const std::string scene = kSourceDir + "/suite/scenes/shadowmask/fifth-overlapping-demoted.json";
-  ASSERT_TRUE(lighting::prepareScene(lighting::loadSceneFile(scene))->needsBake()) << scene << " lost its lightmap";
+  ASSERT_TRUE(lighting::prepareScene(scene_input::loadSceneFile(scene))->needsBake()) << scene << " lost its lightmap";
   ASSERT_EQ(bake(scene, (dir_ / "out").string()), kExitSuccess) << err_.str();
   const nlohmann::json json = readJson(dir_ / "out" / "bake.json");
   long long conflicts = 0;

@@ -72,7 +72,7 @@ TEST_F(BudgetCommand, ElevenLightsMapsAndJsonMatchTheCounts) {
     EXPECT_TRUE(fs::exists(dir_ / file)) << file;
   // The counts the maps must show (reference/tests/light_budget_test.cpp
   // checks them against hand-derived ones).
-  const auto prepared = lighting::prepareScene(lighting::loadSceneFile((kScenes / "per-object/eleven-lights.json").string()));
+  const auto prepared = lighting::prepareScene(scene_input::loadSceneFile((kScenes / "per-object/eleven-lights.json").string()));
   const reference::ReferenceRenderer renderer(prepared);
   const reference::LightBudget budget = reference::computeLightBudget(renderer, lighting::prepareFrame(prepared, 0));
   for (const auto& [file, counts] : {std::pair{"reach.png", &budget.reach}, std::pair{"kept.png", &budget.kept}}) {

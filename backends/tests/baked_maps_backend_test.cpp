@@ -186,7 +186,7 @@ TEST_P(BakedMaps, LightmapIsSampledBilinearlyAndReuploadedWhenTheBakeChanges) {
   std::string whyNot;
   const auto backend = backends::testing::createOrNull(GetParam(), whyNot);
   if (!backend) GTEST_SKIP() << whyNot;
-  const auto plain = lighting::prepareScene(lighting::loadSceneText(sceneJson("[1, 1, 1]", ""), "lightmap.json"));
+  const auto plain = lighting::prepareScene(scene_input::loadSceneText(sceneJson("[1, 1, 1]", ""), "lightmap.json"));
   const auto first = baking::withBake(*plain, bakeOf(firstLightmap(), allOnesMask()));
   const auto second = baking::withBake(*plain, bakeOf(secondLightmap(), allOnesMask()));
   ASSERT_TRUE(lighting::prepareFrame(first, 0).features.lightmap);
@@ -234,7 +234,7 @@ TEST_P(BakedMaps, ShadowMaskChannelAttenuatesItsMixedLightByItsStrength) {
   const auto backend = backends::testing::createOrNull(GetParam(), whyNot);
   if (!backend) GTEST_SKIP() << whyNot;
   const auto plain =
-      lighting::prepareScene(lighting::loadSceneText(sceneJson("[0.9, 0.7, 0.5]", kMaskLights), "mask.json"));
+      lighting::prepareScene(scene_input::loadSceneText(sceneJson("[0.9, 0.7, 0.5]", kMaskLights), "mask.json"));
   ASSERT_EQ(plain->shadowMask.channelOfLight, (std::vector<int>{0, 1, kMaskChannel}));
 
   const lighting::TexelMap mask = makeMap([](int i, int j) -> Texel {
@@ -266,7 +266,7 @@ TEST_P(BakedMaps, ASceneWithoutItsBakeIsRefused) {
   std::string whyNot;
   const auto backend = backends::testing::createOrNull(GetParam(), whyNot);
   if (!backend) GTEST_SKIP() << whyNot;
-  const auto unbaked = lighting::prepareScene(lighting::loadSceneText(sceneJson("[1, 1, 1]", ""), "unbaked.json"));
+  const auto unbaked = lighting::prepareScene(scene_input::loadSceneText(sceneJson("[1, 1, 1]", ""), "unbaked.json"));
   EXPECT_THROW(backend->render(lighting::prepareFrame(unbaked, 0)), std::logic_error);
 }
 

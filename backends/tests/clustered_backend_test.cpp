@@ -60,7 +60,7 @@ TEST_P(ClusteredMode, PassesWhereAllLightsPassesOnEveryEligibleScene) {
   std::string worstScene;
   for (const conformance::SceneFile& sceneFile : conformance::findSceneFiles(LIGHTCTS_SCENES_DIR)) {
     const std::filesystem::path& file = sceneFile.path;
-    lighting::Scene scene = lighting::loadSceneFile(file.string());
+    lighting::Scene scene = scene_input::loadSceneFile(file.string());
     if (scene.pipeline.profile == lighting::Profile::Legacy) {
       ++legacy;
       continue;
@@ -110,7 +110,7 @@ TEST_P(ClusteredMode, EmptiedListsFail) {
   const auto backend = backends::testing::createOrNull(GetParam(), whyNot);
   if (!backend) GTEST_SKIP() << whyNot;
   const std::filesystem::path file = std::filesystem::path(LIGHTCTS_SCENES_DIR) / "attenuation/point-d-0p8-range.json";
-  lighting::Scene scene = lighting::loadSceneFile(file.string());
+  lighting::Scene scene = scene_input::loadSceneFile(file.string());
   conformance::SceneReferences references(baking::prepareBakedScene(std::move(scene)));
   lighting::Frame frame = references.frame(0);
   lighting::useLightClusters(frame, kGrid);

@@ -102,7 +102,7 @@ const std::string kPointAroundCamera = R"(
   {"name": "point", "type": "point", "position": [0, 2, 0], "range": 4, "color": [1, 0.8, 0.6], "intensity": 3})";
 
 lighting::Frame frameOf(const std::string& json) {
-  return lighting::prepareFrame(lighting::prepareScene(lighting::loadSceneText(json, "deferred-backend.json")), 0);
+  return lighting::prepareFrame(lighting::prepareScene(scene_input::loadSceneText(json, "deferred-backend.json")), 0);
 }
 
 struct Allowed {

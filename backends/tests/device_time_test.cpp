@@ -48,9 +48,9 @@ TEST_P(DeviceTime, IsPresentPositiveAndWithinTheWallTimeOfDraw) {
   const backends::DeviceInfo device = backend->device();
   EXPECT_FALSE(backend->lastDrawDeviceMilliseconds().has_value()) << "a device time before any draw()";
 
-  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(lighting::loadSceneFile(kScene)), 0);
+  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(scene_input::loadSceneFile(kScene)), 0);
   const lighting::Frame other =
-      lighting::prepareFrame(baking::prepareBakedScene(lighting::loadSceneFile(kOtherSizeScene)), 0);
+      lighting::prepareFrame(baking::prepareBakedScene(scene_input::loadSceneFile(kOtherSizeScene)), 0);
   ASSERT_NE(frame.scene().image.width, other.scene().image.width);
   // The pipelines' compile stays out of the timed draws.
   backend->preparePipeline(frame);

@@ -195,7 +195,7 @@ std::shared_ptr<const lighting::PreparedScene> loadThroughFile(const SceneSpec& 
   }
   lighting::Scene scene;
   try {
-    scene = lighting::loadSceneFile(path.string());
+    scene = scene_input::loadSceneFile(path.string());
   } catch (...) {
     std::filesystem::remove(path);
     throw;

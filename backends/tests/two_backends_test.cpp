@@ -27,7 +27,7 @@ TEST_P(TwoBackends, EachDrawsInItsOwnContextWhileTheOtherLivesAndDies) {
   std::string whyNot;
   auto first = backends::testing::createOrNull(GetParam(), whyNot);
   if (!first) GTEST_SKIP() << whyNot;
-  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(lighting::loadSceneFile(kSixtyFourLightsScene)), 0);
+  const lighting::Frame frame = lighting::prepareFrame(baking::prepareBakedScene(scene_input::loadSceneFile(kSixtyFourLightsScene)), 0);
   const imaging::Image before = first->render(frame);
 
   auto second = backends::testing::createOrNull(GetParam(), whyNot);

@@ -109,7 +109,7 @@ constexpr const char* kQuadrantScene = R"({
 TEST(VulkanReadback, RowZeroIsTheTopAndColumnZeroTheLeft) {
   auto backend = createOrSkip();
   if (!backend) GTEST_SKIP() << "no Vulkan device";
-  const auto prepared = baking::prepareBakedScene(lighting::loadSceneText(kQuadrantScene, "quadrant.json"));
+  const auto prepared = baking::prepareBakedScene(scene_input::loadSceneText(kQuadrantScene, "quadrant.json"));
   const imaging::Image image = backend->render(lighting::prepareFrame(prepared, 0));
   ASSERT_EQ(image.width, 16);
   ASSERT_EQ(image.height, 8);
@@ -139,7 +139,7 @@ TEST(VulkanSpecialisation, FullShaderPassesEverySceneAsTheSpecialisedDoes) {
   int scenes = 0;
   for (const conformance::SceneFile& file : conformance::findSceneFiles(LIGHTCTS_SCENES_DIR)) {
     conformance::SceneReferences references =
-        backends::testing::cachedSceneReferences(file.path, lighting::loadSceneFile(file.path.string()));
+        backends::testing::cachedSceneReferences(file.path, scene_input::loadSceneFile(file.path.string()));
     const conformance::SceneCheck check = conformance::checkScene(references, *full);
     ++scenes;
     const std::string test = file.caseName() + ".vulkan";

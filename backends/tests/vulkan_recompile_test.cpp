@@ -106,7 +106,7 @@ const char* const kScenes[] = {
 void expectRedrawsCompileNothing(backends::Backend& backend) {
   for (const char* scene : kScenes) {
     const auto prepared =
-        baking::prepareBakedScene(lighting::loadSceneFile((std::filesystem::path(LIGHTCTS_SCENES_DIR) / scene).string()));
+        baking::prepareBakedScene(scene_input::loadSceneFile((std::filesystem::path(LIGHTCTS_SCENES_DIR) / scene).string()));
     const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
     backend.draw(frame);  // the first draw compiles what the frame needs
     const long before = modulesCreated.load();
@@ -121,7 +121,7 @@ TEST(VulkanRecompiles, TheCounterSeesTheDriversCompiles) {
   if (!backend) GTEST_SKIP() << whyNot;
   const long before = modulesCreated.load();
   const auto prepared = baking::prepareBakedScene(
-      lighting::loadSceneFile((std::filesystem::path(LIGHTCTS_SCENES_DIR) / kScenes[0]).string()));
+      scene_input::loadSceneFile((std::filesystem::path(LIGHTCTS_SCENES_DIR) / kScenes[0]).string()));
   backend->draw(lighting::prepareFrame(prepared, 0));
   EXPECT_GT(modulesCreated.load() - before, 0) << "a first draw compiled nothing: the counter is not bound";
 }

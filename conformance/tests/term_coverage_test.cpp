@@ -107,7 +107,7 @@ class TermCoverageScene : public ::testing::TestWithParam<Coverage> {};
 TEST_P(TermCoverageScene, InputsAreNonTrivialAndTheTermDecidesTheVerdict) {
   const Coverage c = GetParam();
   SCOPED_TRACE(std::string(c.scene) + " term " + std::to_string(int(c.term)));
-  const Scene scene = loadSceneFile(std::string(LIGHTCTS_SCENES_DIR) + "/" + c.scene);
+  const Scene scene = scene_input::loadSceneFile(std::string(LIGHTCTS_SCENES_DIR) + "/" + c.scene);
   for (const Object& o : scene.objects) {
     EXPECT_EQ(o.brdf, c.brdf) << o.name;
     EXPECT_TRUE(strictlyBetween0And1(o.albedo) && coloured(o.albedo)) << o.name << ": albedo";

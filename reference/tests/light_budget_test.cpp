@@ -29,7 +29,7 @@ struct Loaded {
 
 Loaded load(const std::string& scene) {
   Loaded l;
-  l.prepared = lighting::prepareScene(lighting::loadSceneFile((kScenes / scene).string()));
+  l.prepared = lighting::prepareScene(scene_input::loadSceneFile((kScenes / scene).string()));
   l.renderer = std::make_unique<ReferenceRenderer>(l.prepared);
   return l;
 }

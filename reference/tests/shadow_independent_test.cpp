@@ -423,7 +423,7 @@ struct Built {
 
 Built buildReference(const model::Geometry& g, const model::Light& l, int planeSubdivisions) {
   Built b;
-  lighting::Scene scene = lighting::loadSceneText(sceneText(g, l, planeSubdivisions), "shadow_independent.json");
+  lighting::Scene scene = scene_input::loadSceneText(sceneText(g, l, planeSubdivisions), "shadow_independent.json");
   b.prepared = lighting::prepareScene(std::move(scene));
   const lighting::Frame frame = lighting::prepareFrame(b.prepared, 0);
   b.world = std::make_unique<reference::WorldTriangles>(reference::buildWorldTriangles(*b.prepared));
@@ -752,9 +752,9 @@ std::string lightScene(const std::string& light) {
 // Loads `text`, expects a SceneLoadError whose message names one of `paths`.
 void expectLoadError(const std::string& text, const std::vector<std::string>& paths) {
   try {
-    lighting::loadSceneText(text, "bad.json");
+    scene_input::loadSceneText(text, "bad.json");
     ADD_FAILURE() << "loaded without error:\n" << text;
-  } catch (const lighting::SceneLoadError& e) {
+  } catch (const scene_input::SceneLoadError& e) {
     const std::string message = e.what();
     bool named = false;
     for (const std::string& p : paths) named = named || message.find(p) != std::string::npos;
@@ -766,7 +766,7 @@ void expectLoadError(const std::string& text, const std::vector<std::string>& pa
 
 TEST(ShadowIndependent, ShadowMapScenesThatAreErrors) {
   // A sanity scene that must load, so the failures below are the bullets'.
-  EXPECT_NO_THROW(lighting::loadSceneText(
+  EXPECT_NO_THROW(scene_input::loadSceneText(
       lightScene(R"({"type": "spot", "position": [0, 3, 0], "direction": [0, -1, 0], "range": 6,
         "spot_angle_deg": 170, "mode": "realtime", "shadows": true,
         "shadow_map": {"resolution": 128, "filter": "tent3x3", "near": 0.5}})"),

@@ -31,7 +31,7 @@ std::shared_ptr<const lighting::PreparedScene> planeAndBox(const std::string& li
       {"name": "floor", "mesh": {"type": "plane", "size": [10, 10]}},
       {"name": "box", "mesh": {"type": "box", "size": [1, 1, 1]}, "transform": {"translate": [0, 1.5, 0]}}],
     "lights": [)" + light + "]}";
-  return lighting::prepareScene(lighting::loadSceneText(text, "planeAndBox.json"));
+  return lighting::prepareScene(scene_input::loadSceneText(text, "planeAndBox.json"));
 }
 
 struct Built {

@@ -11,8 +11,10 @@
 #include <unistd.h>
 #include <vector>
 
-namespace lighting {
+namespace scene_input {
 namespace {
+
+using namespace lighting;
 
 namespace fs = std::filesystem;
 
@@ -113,4 +115,4 @@ TEST_F(CookieLoader, BadCookiesNameTheirPathAndFile) {
 }
 
 }  // namespace
-}  // namespace lighting
+}  // namespace scene_input

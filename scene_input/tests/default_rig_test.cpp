@@ -20,8 +20,10 @@
 
 #include <unistd.h>
 
-namespace lighting {
+namespace scene_input {
 namespace {
+
+using namespace lighting;
 
 const std::string kModels = std::string(LIGHTCTS_SOURCE_DIR) + "/suite/scenes/gltf/models/";
 
@@ -145,4 +147,4 @@ TEST(DefaultRig, TheScenePrintedForAGltfFileLoadsAsTheSameScene) {
 }
 
 }  // namespace
-}  // namespace lighting
+}  // namespace scene_input

@@ -17,8 +17,10 @@
 
 #include <unistd.h>
 
-namespace lighting {
+namespace scene_input {
 namespace {
+
+using namespace lighting;
 
 namespace fs = std::filesystem;
 
@@ -403,4 +405,4 @@ TEST_F(GltfRefusal, LineAndColumnOfATextFile) {
 }
 
 }  // namespace
-}  // namespace lighting
+}  // namespace scene_input

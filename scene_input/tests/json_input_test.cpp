@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
-namespace lighting {
+namespace scene_input {
 namespace {
+
+using namespace lighting;
 
 using Json = nlohmann::ordered_json;
 
@@ -70,4 +72,4 @@ TEST(JsonInput, BoundsSpellTheirInterval) {
 }
 
 }  // namespace
-}  // namespace lighting
+}  // namespace scene_input

@@ -17,8 +17,10 @@ namespace glm {
 void PrintTo(const dvec3& v, std::ostream* os) { *os << "[" << v.x << ", " << v.y << ", " << v.z << "]"; }
 }  // namespace glm
 
-namespace lighting {
+namespace scene_input {
 namespace {
+
+using namespace lighting;
 
 // Loads text that must be rejected and returns the error.
 SceneError loadError(std::string_view text) {
@@ -714,4 +716,4 @@ TEST(SceneLoaderError, SrpMaterialKeysAndProfile) {
 }
 
 }  // namespace
-}  // namespace lighting
+}  // namespace scene_input

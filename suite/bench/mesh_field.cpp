@@ -45,13 +45,13 @@ std::vector<Object> engines(const FieldSize& size) {
   for (int i = 1; i < field.tileColumns; i += 2) {
     for (int k = 1; k < field.tileRows; k += 2) {
       if ((i + k) % 4 != 2) continue;  // every other corner
-      GltfImportRequest request;
+      scene_input::GltfImportRequest request;
       request.file = kEngineFile;
       const glm::dvec3 at(-fieldX / 2 + i * tileX, kEngineLift, -kFieldZ / 2 + k * tileZ);
       request.transform = glm::translate(glm::dmat4(1.0), at) *
                           glm::rotate(glm::dmat4(1.0), glm::radians(37.0 * placed), glm::dvec3(0, 1, 0)) *
                           glm::scale(glm::dmat4(1.0), glm::dvec3(kEngineScale));
-      for (const ImportedPrimitive& primitive : importGltf(request).primitives) {
+      for (const scene_input::ImportedPrimitive& primitive : scene_input::importGltf(request).primitives) {
         Object object;
         object.name = "engine" + std::to_string(placed) + "/" + primitive.name;
         object.mesh.type = MeshType::Imported;

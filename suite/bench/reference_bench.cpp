@@ -78,7 +78,7 @@ void registerSceneFiles() {
   if (!fs::exists(root)) return;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (entry.path().extension() != ".json") continue;
-    const Scene scene = loadSceneFile(entry.path().string());
+    const Scene scene = scene_input::loadSceneFile(entry.path().string());
     const std::string name = "reference/" + entry.path().parent_path().filename().string() + "." + scene.name;
     benchmark::RegisterBenchmark(name.c_str(), [scene](benchmark::State& st) { renderFrame(st, scene); })
         ->Unit(benchmark::kMillisecond);

@@ -27,7 +27,7 @@ void registerSuiteScenes(Registrar& r) {
     try {
       // Loaded now for its mode (a benchmark's name); baked and traced when a
       // benchmark the filter keeps first needs it.
-      auto scene = std::make_shared<lighting::Scene>(lighting::loadSceneFile(file.path.string()));
+      auto scene = std::make_shared<lighting::Scene>(scene_input::loadSceneFile(file.path.string()));
       const std::string mode = modeName(frameModeOf(scene->pipeline));
       r.frame(sceneId, mode, "", lazyBenchFrame(true, [scene, sceneId] {
                 BenchFrameSpec spec;

@@ -519,7 +519,7 @@ PlaneCase legacyVertexLightsCase() {
 // The reference renderer against the model
 
 reference::ReferenceImages renderReference(const SceneSpec& s, bool ideal, bool keepExactValues) {
-  const lighting::Scene scene = lighting::loadSceneText(sceneJson(s), s.name + ".json");
+  const lighting::Scene scene = scene_input::loadSceneText(sceneJson(s), s.name + ".json");
   const auto prepared = lighting::prepareScene(scene);
   const lighting::Frame frame = lighting::prepareFrame(prepared, 0);
   reference::ReferenceOptions options;
