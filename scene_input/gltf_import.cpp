@@ -433,17 +433,32 @@ GltfContent importGltf(const GltfImportRequest& request) {
   const std::vector<unsigned char> bytes = readBytes(file);
   if (bytes.empty()) throw GltfError(file, "", "the glTF file is empty");
   const bool glb = isGlb(bytes);
-  const std::string text = glb ? glbJson(bytes, file) : std::string(bytes.begin(), bytes.end());
-  const Json document = parseDocument(text, file);
-  std::vector<std::string> warnings;
-  checkGltfJson(document, file, warnings);
-  checkExternalBuffers(document, file);
-  const std::size_t bufferCount = document.contains("buffers") ? document["buffers"].size() : 0;
-  const GltfBuffers buffers = loadBuffers(bytes, text, glb, file, bufferCount);
-  if (buffers.size() != bufferCount)
-    throw GltfError(file, "/buffers", "tinygltf read " + std::to_string(buffers.size()) + " of " +
-                                          std::to_string(bufferCount) + " buffers");
-  return Importer(request, document, buffers).run(std::move(warnings));
+  const auto text = std::make_shared<const std::string>(glb ? glbJson(bytes, file) : std::string(bytes.begin(), bytes.end()));
+  try {
+    const Json document = parseDocument(*text, file);
+    std::vector<std::string> warnings;
+    checkGltfJson(document, file, warnings);
+    checkExternalBuffers(document, file);
+    const std::size_t bufferCount = document.contains("buffers") ? document["buffers"].size() : 0;
+    const GltfBuffers buffers = loadBuffers(bytes, *text, glb, file, bufferCount);
+    if (buffers.size() != bufferCount)
+      throw GltfError(file, "/buffers", "tinygltf read " + std::to_string(buffers.size()) + " of " +
+                                            std::to_string(bufferCount) + " buffers");
+    GltfContent content = Importer(request, document, buffers).run(std::move(warnings));
+    content.file = file;
+    if (!glb) content.jsonText = text;
+    return content;
+  } catch (const GltfError& error) {
+    // The checks name a JSON pointer; its line and column come from the text parsed here.
+    if (glb || error.where().line != 0 || error.pointer().empty()) throw;
+    throw GltfError(error.file(), error.pointer(), error.message(),
+                    locateJsonPointer(*text, error.pointer()).value_or(TextPosition{}));
+  }
+}
+
+TextPosition GltfContent::positionOf(const std::string& pointer) const {
+  if (!jsonText || pointer.empty()) return {};
+  return locateJsonPointer(*jsonText, pointer).value_or(TextPosition{});
 }
 
 }  // namespace scene_input

@@ -90,6 +90,13 @@ struct GltfContent {
   std::vector<std::string> warnings;          // "FILE: /pointer: what was ignored"
   lighting::Vec3 boundsMin{0, 0, 0}, boundsMax{0, 0, 0};  // of every imported triangle (world space)
   std::size_t triangles = 0;
+  std::string file;  // the request's
+  // The .gltf's JSON text, null for a .glb (its JSON is a chunk of a binary
+  // file: no line and column of it), kept so that a fault found in the
+  // content after the import names its line and column without reading the
+  // file again.
+  std::shared_ptr<const std::string> jsonText;
+  TextPosition positionOf(const std::string& pointer) const;  // {} when unknown
 };
 
 // SPEC 2.1: more triangles than this, after strips, fans and double-sided

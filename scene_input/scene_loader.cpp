@@ -5,14 +5,16 @@
 
 #include "imaging/image_files.h"
 
-#include "lighting/default_rig.h"
 #include "lighting/scene_words.h"
 #include "lighting/transform.h"
 #include "lighting/visible_lights.h"
 #include "scene_input/gltf_import.h"
+#include "scene_input/gltf_scene_mapping.h"
 #include "scene_input/json_describe.h"
+#include "scene_input/json_cursor.h"
 #include "scene_input/json_input.h"
 #include "scene_input/json_locations.h"
+#include "scene_input/look_at.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -66,9 +68,6 @@ constexpr long long kMaxLightmapResolution = 4096;
 constexpr long long kMaxFrames = 10000;
 // glTF indices (a scene, a camera) beyond this are no file's.
 constexpr long long kMaxGltfIndex = 1 << 30;
-// Below this sine of the angle between up and the view direction, lookAt has
-// no usable basis.
-constexpr double kMinUpSine = 1e-6;
 
 // The one place that builds errors: every failure of loading goes through here.
 [[noreturn]] void throwSceneError(std::string file, std::string jsonPath, TextPosition where,
@@ -169,23 +168,7 @@ constexpr const auto& kDeferredBuffers = kDeferredBufferWords;
 constexpr std::array<Choice<CompareAgainst>, 2> kCompareAgainst{
     {{"reference", CompareAgainst::Reference}, {"realtime", CompareAgainst::Realtime}}};
 
-// `v` scaled to unit length, or nullopt for the zero vector. Dividing by the
-// largest component first keeps tiny and huge vectors from under- or overflowing.
-std::optional<Vec3> unitVector(const Vec3& v) {
-  const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
-  if (largest == 0) return std::nullopt;
-  const Vec3 scaled = v / largest;
-  return scaled / glm::length(scaled);
-}
-
-bool isParallel(const Vec3& unitA, const Vec3& unitB) { return glm::length(glm::cross(unitA, unitB)) < kMinUpSine; }
-
-// A value of the document with its RFC 6901 pointer, so that any error about
-// it can name where it is (SPEC 2).
-struct Node {
-  const Json& value;
-  std::string pointer;
-};
+using Node = JsonCursor<Json>;
 
 // Walks the parsed document; holds the text only to find line and column when
 // something is wrong.
@@ -194,7 +177,7 @@ class SceneReader {
   SceneReader(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {}
 
   Scene readScene(const Json& document) const {
-    const Node root{document, ""};
+    const Node root = Node::root(document);
     expectObject(root);
     readFormatVersion(root);
     checkKeys(root, kSceneKeys);
@@ -220,11 +203,7 @@ class SceneReader {
     for (Import& import : imports) {
       for (Object& object : import.objects) scene.objects.push_back(std::move(object));
       for (Light& light : import.lights) scene.lights.push_back(std::move(light));
-      if (import.defaultRig) {
-        DefaultRig rig = defaultRig(import.content.boundsMin, import.content.boundsMax, scene.camera);
-        for (Light& light : rig.lights) scene.lights.push_back(std::move(light));
-        if (!member(root, "ambient")) scene.ambient = rig.ambient;
-      }
+      if (import.defaultRig) lightByDefaultRig(scene, import.content, !member(root, "ambient"));
       for (std::string& warning : import.content.warnings) scene.warnings.push_back(std::move(warning));
     }
     if (auto frames = member(root, "frames")) scene.frames = readFrames(*frames, scene.camera);
@@ -252,24 +231,16 @@ class SceneReader {
 
   // --- objects and keys -----------------------------------------------------
 
-  static Node child(const Node& object, std::string_view key, const Json& value) {
-    return {value, object.pointer + "/" + escapeJsonPointerToken(key)};
-  }
-
   void expectObject(const Node& node) const {
     if (auto problem = kindProblem(node.value, JsonKind::Object)) fail(node, *problem);
   }
 
-  std::optional<Node> member(const Node& object, std::string_view key) const {
-    const auto found = object.value.find(key);
-    if (found == object.value.end()) return std::nullopt;
-    return child(object, key, *found);
-  }
+  static std::optional<Node> member(const Node& object, std::string_view key) { return object.member(key); }
 
   // A missing key has no place of its own, so the error points at the object that lacks it.
   void requireMember(const Node& object, std::string_view key) const {
     if (object.value.contains(key)) return;
-    failAt(object.pointer + "/" + escapeJsonPointerToken(key), object.pointer, JsonLocationTarget::Value,
+    failAt(object.pointerTo(key), object.pointer, JsonLocationTarget::Value,
            "missing required key '" + std::string(key) + "'");
   }
 
@@ -284,7 +255,7 @@ class SceneReader {
     for (const auto& item : object.value.items()) {
       const std::string& key = item.key();
       if (contains(allowed, key)) continue;
-      const Node node = child(object, key, item.value());
+      const Node node = object.item(key, item.value());
       if (others && contains(others->keys, key)) {
         failOnKey(node, "key '" + key + "' does not apply to " + others->chosen);
       }
@@ -298,7 +269,7 @@ class SceneReader {
     std::vector<T> elements;
     elements.reserve(node.value.size());
     for (std::size_t i = 0; i < node.value.size(); ++i) {
-      elements.push_back((this->*readElement)({node.value[i], node.pointer + "/" + std::to_string(i)}, i));
+      elements.push_back((this->*readElement)(node.element(i), i));
     }
     return elements;
   }
@@ -346,7 +317,7 @@ class SceneReader {
       fail(node, "expected an array of 3 numbers, got " + describeJsonTypeAndLength(node.value));
     }
     const auto element = [&](std::size_t i) {
-      return readNumber({node.value[i], node.pointer + "/" + std::to_string(i)}, bounds);
+      return readNumber(node.element(i), bounds);
     };
     return Vec3{element(0), element(1), element(2)};  // braces: evaluated in order, so the first bad element is named
   }
@@ -384,7 +355,7 @@ class SceneReader {
     if (!node.value.is_array()) fail(node, "expected an array of imports, got " + describeJsonType(node.value));
     std::vector<Import> imports;
     for (std::size_t i = 0; i < node.value.size(); ++i)
-      imports.push_back(readImport({node.value[i], node.pointer + "/" + std::to_string(i)}, profile));
+      imports.push_back(readImport(node.element(i), profile));
     return imports;
   }
 
@@ -420,21 +391,23 @@ class SceneReader {
         takeLights = readBool(*lights);
       }
     }
-    const auto defaults = member(node, "light_defaults");
-    if (defaults) {
-      expectObject(*defaults);
-      checkKeys(*defaults, kLightDefaultsKeys);
+    std::optional<LightDefaults> defaults;
+    if (auto defaultsNode = member(node, "light_defaults")) {
       if (!takeLights)
-        failOnKey(*defaults, "light_defaults sets the imported file's lights, and this import takes none");
-      checkLightDefaultValues(*defaults);
+        failOnKey(*defaultsNode, "light_defaults sets the imported file's lights, and this import takes none");
+      defaults = readLightDefaults(*defaultsNode);
     }
-    import.content = importFile(import.request, node);
+    const std::string context = "imported by " + file_ + " at " + node.pointer;
+    try {
+      import.content = importGltf(import.request);
+    } catch (const GltfError& error) {
+      throwAsSceneError(error, context);
+    }
     for (const ImportedPrimitive& primitive : import.content.primitives)
-      import.objects.push_back(importedObject(primitive, material, profile));
+      import.objects.push_back(sceneObject(primitive, material, profile));
     if (takeLights)
       for (const ImportedLight& light : import.content.lights)
-        import.lights.push_back(
-            importedLight(light, defaults, import.request.file, "imported by " + file_ + " at " + node.pointer));
+        import.lights.push_back(sceneLight(light, import.content, defaults ? &*defaults : nullptr, std::nullopt, context));
     return import;
   }
 
@@ -446,88 +419,24 @@ class SceneReader {
     return m;
   }
 
-  // The import itself; a fault of the glTF file is reported against that
-  // file and its JSON path, with the import that brought it in.
-  GltfContent importFile(const GltfImportRequest& request, const Node& importNode) const {
-    try {
-      return importGltf(request);
-    } catch (const GltfError& error) {
-      throwGltfError(error, "imported by " + file_ + " at " + importNode.pointer);
-    }
-  }
-
-  static Object importedObject(const ImportedPrimitive& primitive, const std::optional<Object>& material,
-                               Profile profile) {
-    Object object = material.value_or(Object{});
-    object.name = primitive.name;
-    object.mesh.type = MeshType::Imported;
-    object.mesh.imported = primitive.mesh;
-    if (material) return object;
-    // SPEC 2.1's mapping: glTF's roughness is URP's perceptual roughness.
-    object.albedo = primitive.baseColor;
-    if (profile == Profile::Legacy) return object;  // diffuse only: lambert with that albedo
-    object.brdf = Brdf::Srp;
-    object.metallic = primitive.metallic;
-    object.smoothness = 1 - primitive.roughness;
-    return object;
-  }
-
-  // The values of light_defaults that are the same for every light type, read
-  // once whether or not the file has lights (a value out of range is an error
-  // even where nothing takes it); `cookie` and `shadow_map` depend on the
-  // type and are read with each light.
-  void checkLightDefaultValues(const Node& defaults) const {
-    if (auto range = member(defaults, "range")) readNumber(*range, above(0));
-    if (auto mode = member(defaults, "mode")) readChoice(*mode, kLightModes);
-    if (auto shadows = member(defaults, "shadows")) readBool(*shadows);
-    if (auto strength = member(defaults, "shadow_strength")) readNumber(*strength, closed(0, 1));
-    if (auto falloff = member(defaults, "bake_falloff")) readChoice(*falloff, kBakeFalloffs);
-  }
-
-  Light importedLight(const ImportedLight& in, const std::optional<Node>& defaults, const std::string& gltfFile,
-                      const std::string& context, std::optional<double> bareRange = std::nullopt) const {
-    Light light;
-    light.name = in.name;
-    light.type = in.type;
-    light.position = in.position;
-    light.direction = in.direction;
-    light.color = in.color;
-    light.intensity = in.intensity;
-    light.spotAngleDeg = in.spotAngleDeg;
-    light.innerSpotAngleDeg = in.innerSpotAngleDeg;
-    const auto defaultRange = defaults ? member(*defaults, "range") : std::nullopt;
-    if (in.range) light.range = *in.range;
-    else if (defaultRange) light.range = readNumber(*defaultRange, above(0));
-    else if (bareRange) light.range = *bareRange;
-    else if (in.type != LightType::Directional)
-      throwGltfError(GltfError(gltfFile, in.pointer, "the light '" + in.name +
-                                                          "' has no range and the import gives no light_defaults.range"),
-                     context);
-    if (!defaults) return light;
-    // What glTF has no word for comes from light_defaults, checked for
-    // this light's type as a scene light's keys would be.
-    if (auto mode = member(*defaults, "mode")) light.mode = readChoice(*mode, kLightModes);
-    if (auto shadows = member(*defaults, "shadows")) light.shadows = readBool(*shadows);
-    if (auto strength = member(*defaults, "shadow_strength")) light.shadowStrength = readNumber(*strength, closed(0, 1));
-    if (auto falloff = member(*defaults, "bake_falloff")) light.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
-    if (auto cookie = member(*defaults, "cookie")) light.cookie = readCookie(*cookie, light);
-    readShadowMap(*defaults, light);
-    return light;
-  }
-
-  // A GltfError as a scene error: the glTF file, its JSON path, the line and
-  // column in a .gltf text, and which scene imported it.
-  [[noreturn]] static void throwGltfError(const GltfError& error, const std::string& context) {
-    // A .glb's JSON is a chunk of a binary file: no line and column of it.
-    const bool jsonText = std::filesystem::path(error.file()).extension() != ".glb";
-    TextPosition where = jsonText ? error.where() : TextPosition{};
-    if (jsonText && where.line == 0 && !error.pointer().empty()) {
-      std::ifstream in(error.file(), std::ios::binary);
-      std::ostringstream text;
-      text << in.rdbuf();
-      where = locateJsonPointer(text.str(), error.pointer()).value_or(TextPosition{});
-    }
-    throwSceneError(error.file(), error.pointer(), where, error.message() + " (" + context + ")");
+  // light_defaults, read once, whether or not the file has lights (a value
+  // out of range is an error even where nothing takes it). A cookie and a
+  // shadow map depend on the light's type: read with each light, as a scene
+  // light's keys would be.
+  LightDefaults readLightDefaults(const Node& node) const {
+    expectObject(node);
+    checkKeys(node, kLightDefaultsKeys);
+    LightDefaults defaults;
+    if (auto range = member(node, "range")) defaults.range = readNumber(*range, above(0));
+    if (auto mode = member(node, "mode")) defaults.mode = readChoice(*mode, kLightModes);
+    if (auto shadows = member(node, "shadows")) defaults.shadows = readBool(*shadows);
+    if (auto strength = member(node, "shadow_strength")) defaults.shadowStrength = readNumber(*strength, closed(0, 1));
+    if (auto falloff = member(node, "bake_falloff")) defaults.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
+    defaults.perLight = [this, node](Light& light) {
+      if (auto cookie = member(node, "cookie")) light.cookie = readCookie(*cookie, light);
+      readShadowMap(node, light);
+    };
+    return defaults;
   }
 
   // SPEC 2.1 `camera: {"gltf_camera": N}`: the first import's camera N.
@@ -541,110 +450,9 @@ class SceneReader {
       fail(index, "the first import has no camera " + std::to_string(n) + " on a node of its scene (it has " +
                       std::to_string(content.cameras.size()) + " cameras)");
     }
-    const auto camera = cameraFromGltf(*content.cameras[std::size_t(n)], content);
+    const auto camera = sceneCamera(*content.cameras[std::size_t(n)], content);
     if (!camera) fail(index, "glTF camera " + std::to_string(n) + " has no usable view (its up is along its view direction)");
     return *camera;
-  }
-
- public:
-  // SPEC 2.1's bare glTF file: a scene of that import alone, with the scene
-  // format's defaults (image 128x128, srp forward, no ambient) and
-  // docs/scene-format.md's choices: the file's first camera on a node, else a
-  // perspective camera that frames the content, and light_defaults.range =
-  // the diagonal of the content's bounds (a light without a range reaches
-  // all of it).
-  Scene readBareGltf() const {
-    GltfImportRequest request;
-    request.file = file_;
-    GltfContent content;
-    try {
-      content = importGltf(request);
-    } catch (const GltfError& error) {
-      throwGltfError(error, "read as a bare glTF scene");
-    }
-    Scene scene;
-    scene.name = std::filesystem::path(file_).stem().string();
-    scene.description = "the glTF file " + std::filesystem::path(file_).filename().string() + " alone";
-    std::optional<Camera> camera;
-    for (const auto& c : content.cameras)
-      if (c && !camera) camera = cameraFromGltf(*c, content);
-    scene.camera = camera ? *camera : framingCamera(content);
-    const double diagonal = std::max(glm::length(content.boundsMax - content.boundsMin), kSmallestBareRange);
-    for (const ImportedPrimitive& primitive : content.primitives)
-      scene.objects.push_back(importedObject(primitive, std::nullopt, scene.pipeline.profile));
-    for (const ImportedLight& in : content.lights) {
-      Light light = importedLight(in, std::nullopt, file_, "read as a bare glTF scene", diagonal);
-      scene.lights.push_back(std::move(light));
-    }
-    scene.warnings = std::move(content.warnings);
-    // SPEC 2.1: content without lights gets the default rig, not a black image.
-    if (content.lights.empty()) {
-      DefaultRig rig = defaultRig(content.boundsMin, content.boundsMax, scene.camera);
-      scene.lights = std::move(rig.lights);
-      scene.ambient = rig.ambient;
-      scene.warnings.push_back(file_ +
-                               ": the file has no KHR_lights_punctual lights: it is lit by the default rig "
-                               "(docs/scene-format.md; `lightcts lights --scene FILE --scene-json` prints it as a scene file)");
-    }
-    return scene;
-  }
-
-  // A light's range when the content has no extent (a single point).
-  static constexpr double kSmallestBareRange = 1;
-
-  // A perspective camera (60 degrees) looking at the centre of the content
-  // from the front (+Z) and a little above and to the right, at a distance
-  // that fits its bounding sphere.
-  static Camera framingCamera(const GltfContent& content) {
-    const Vec3 centre = (content.boundsMin + content.boundsMax) * 0.5;
-    const double radius = std::max(0.5 * glm::length(content.boundsMax - content.boundsMin), 1e-3);
-    Camera camera;
-    camera.projection = Projection::Perspective;
-    camera.fovYDeg = 60;
-    const double distance = radius / std::sin(camera.fovYDeg * std::numbers::pi / 360) * 1.05;
-    camera.position = centre + glm::normalize(Vec3(0.5, 0.5, 1)) * distance;
-    camera.target = centre;
-    camera.up = Vec3(0, 1, 0);
-    camera.nearPlane = std::max(distance - 1.5 * radius, distance * 1e-3);
-    camera.farPlane = distance + 1.5 * radius;
-    return camera;
-  }
-
-  // A glTF camera as the model's (SPEC 2.1): perspective with its yfov, or
-  // orthographic with height 2 * ymag; a perspective camera without zfar gets
-  // a far plane just beyond the farthest corner of the imported content.
-  static std::optional<Camera> cameraFromGltf(const ImportedCamera& in, const GltfContent& content) {
-    Camera camera;
-    camera.position = in.position;
-    camera.target = in.position + in.forward;
-    camera.up = in.up;
-    camera.nearPlane = in.znear;
-    if (in.perspective) {
-      camera.projection = Projection::Perspective;
-      camera.fovYDeg = in.yfovRad * 180 / std::numbers::pi;
-    } else {
-      camera.projection = Projection::Orthographic;
-      camera.orthoHeight = 2 * in.ymag;
-    }
-    if (!(camera.nearPlane > 0)) camera.nearPlane = 1e-3 * in.zfar.value_or(1.0);  // glTF allows 0 for orthographic
-    camera.farPlane = in.zfar.value_or(farthestCornerDistance(in.position, content) * kFarPlaneMargin);
-    if (!(camera.farPlane > camera.nearPlane)) camera.farPlane = camera.nearPlane * 1000;
-    if (lookAtProblem(camera.position, camera.target, camera.up)) return std::nullopt;
-    return camera;
-  }
-
-  // Beyond the farthest corner by this factor, so nothing is clipped at far.
-  static constexpr double kFarPlaneMargin = 1.01;
-
-  static double farthestCornerDistance(const Vec3& from, const GltfContent& content) {
-    double farthest = 0;
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 p((corner & 1) ? content.boundsMax.x : content.boundsMin.x,
-                   (corner & 2) ? content.boundsMax.y : content.boundsMin.y,
-                   (corner & 4) ? content.boundsMax.z : content.boundsMin.z);
-      farthest = std::max(farthest, glm::length(p - from));
-    }
-    return farthest;
   }
 
  private:
@@ -695,17 +503,6 @@ class SceneReader {
     }
     fail(*nearNode, "expected near < far (" + formatJsonNumber(camera.farPlane) + ", the default), got " +
                         formatJsonNumber(camera.nearPlane));
-  }
-
-  enum class LookAtProblem { SamePoint, UpParallel };
-
-  // SPEC 1: lookAt(position, target, up) needs a view direction and an up
-  // that is not along it.
-  static std::optional<LookAtProblem> lookAtProblem(const Vec3& position, const Vec3& target, const Vec3& up) {
-    const auto view = unitVector(target - position);
-    if (!view) return LookAtProblem::SamePoint;
-    if (isParallel(*view, *unitVector(up))) return LookAtProblem::UpParallel;
-    return std::nullopt;
   }
 
   static std::string describe(LookAtProblem problem, const Vec3& up) {
@@ -841,7 +638,7 @@ class SceneReader {
   void rejectSrpMaterials(const Node& objects, const std::vector<Object>& read) const {
     for (std::size_t i = 0; i < read.size(); ++i) {
       if (read[i].brdf != Brdf::Srp) continue;
-      const Node object{objects.value[i], objects.pointer + "/" + std::to_string(i)};
+      const Node object = objects.element(i);
       const Node material = *member(object, "material");
       fail(*member(material, "brdf"),
            "brdf 'srp' is not available in the legacy profile (the older forward chapter is diffuse only, SPEC 2)");
@@ -970,7 +767,7 @@ class SceneReader {
         if (!cube.value.is_array() || cube.value.size() != kCubeFaces)
           fail(cube, "expected the six faces [+X, -X, +Y, -Y, +Z, -Z], got " + describeJsonTypeAndLength(cube.value));
         for (std::size_t f = 0; f < kCubeFaces; ++f) {
-          const Node face{cube.value[f], cube.pointer + "/" + std::to_string(f)};
+          const Node face = cube.element(f);
           readCookieImage(face, cookie);
           const CookieImage& image = *cookie.images.back();
           const CookieImage& first = *cookie.images.front();
@@ -1025,7 +822,7 @@ class SceneReader {
       fail(*path, "expected no keyframes (a still camera) or at least 2, got 1");
     }
     for (std::size_t k = 0; k < path->value.size(); ++k) {
-      frames.cameraPath.push_back(readKeyframe({path->value[k], path->pointer + "/" + std::to_string(k)}, camera));
+      frames.cameraPath.push_back(readKeyframe(path->element(k), camera));
     }
     // SPEC 2 puts frame f at t = f / (count - 1), undefined for one frame.
     if (!frames.cameraPath.empty() && frames.count < 2) {
@@ -1081,7 +878,7 @@ Scene loadSceneText(std::string_view text, const std::string& sourceName) {
 
 Scene loadSceneFile(const std::string& path) {
   if (isGltfPath(path)) {
-    Scene scene = SceneReader("", path).readBareGltf();
+    Scene scene = bareGltfScene(path);
     scene.sourcePath = path;
     return scene;
   }
