@@ -455,7 +455,6 @@ class SceneReader {
     return *camera;
   }
 
- private:
   Camera readCamera(const Node& node, const std::vector<Import>& imports) const {
     expectObject(node);
     if (node.value.contains("gltf_camera")) return readGltfCamera(node, imports);
