@@ -5,6 +5,7 @@
 #include "reports/bench_table.h"
 #include "reports/html_escape.h"
 #include "reports/svg_plot.h"
+#include "results/bench_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,8 @@
 #include <vector>
 
 namespace reports::benchpages {
+
+namespace bench = results::bench;
 namespace {
 
 // `e` (median, min-max whiskers) at its curve x, in the line of `group`.
@@ -82,7 +85,7 @@ void prepareCurve(std::ostream& out, const BenchModel& m, const std::string& sce
   const std::size_t measured = plot.series.size();
   for (std::size_t i = 0; i < measured; ++i) {
     for (const ComplexityFit& fit : m.set.fits) {
-      if (fit.family.kind != "prepare" || fit.family.scene != scene || fit.family.mode != plot.series[i].name) continue;
+      if (fit.family.kind != bench::kPrepare || fit.family.scene != scene || fit.family.mode != plot.series[i].name) continue;
       fits.push_back(&fit);
       if (auto line = fitLine(fit, plot.series[i])) plot.series.push_back(std::move(*line));
     }
@@ -100,7 +103,7 @@ void prepareCurve(std::ostream& out, const BenchModel& m, const std::string& sce
 }  // namespace
 
 void costCurveSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend) {
-  const Entries curves = filter(candidates, [](const BenchEntry& e) { return e.name.kind == "frame" && isCurve(e); });
+  const Entries curves = filter(candidates, [](const BenchEntry& e) { return e.name.kind == bench::kFrame && isCurve(e); });
   out << "<h2 id=\"curves\">Cost curves</h2>\n<p class=\"note\">Median frame time (<code>frame</code>: draw, no "
          "readback) against the load; the whiskers span the minimum and maximum over the repetitions.</p>\n";
   if (curves.empty()) {
@@ -147,7 +150,7 @@ void twoTermSection(std::ostream& out, const BenchModel& m, const Entries& candi
     std::optional<double> roofNs;
     for (const BenchEntry* e : candidates) {
       if (backendOf(*e) != backend || e->name.scene != "curve-lights") continue;
-      const auto limit = counter(*e, "limit_ms");
+      const auto limit = counter(*e, bench::kLimitMs);
       const auto point = twoTermPointOf(*e);
       if (limit && point && point->pixelLights > 0) {
         roofNs = *limit / point->pixelLights * 1e6;
@@ -176,7 +179,7 @@ void prepareSection(std::ostream& out, const BenchModel& m) {
   for (const std::string& scene : scenesOf(curves)) prepareCurve(out, m, scene, ofScene(curves, scene));
   // Fits of families that are not plotted.
   for (const ComplexityFit& fit : m.set.fits)
-    if (fit.family.kind != "prepare")
+    if (fit.family.kind != bench::kPrepare)
       out << "<p class=\"fits\">" << escapeText(fit.family.full) << ": " << escapeText(fitText(fit)) << "</p>\n";
   out << "<h3>prepare (" << prepare.size() << ")</h3>\n";
   benchTable(out, prepare);

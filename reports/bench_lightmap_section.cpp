@@ -6,8 +6,11 @@
 #include "reports/bench_table.h"
 #include "reports/html_escape.h"
 #include "reports/svg_plot.h"
+#include "results/bench_names.h"
 
 namespace reports::benchpages {
+
+namespace bench = results::bench;
 namespace {
 
 // The two plots of one lightmap scene, filled a point at a time.
@@ -40,10 +43,10 @@ void addPoints(svg::SeriesBuilder& errors, svg::SeriesBuilder& times, const Benc
     plot.add(byBackend ? group + " " + what : what, {colour, true, second}, p);
   };
   if (!isBroken(e)) {  // a broken image has no error to plot
-    add(errors, "err_rmse", false, counter(e, "err_rmse"));
-    add(errors, "err_max_abs", true, counter(e, "err_max_abs"));
+    add(errors, "err_rmse", false, counter(e, bench::kErrRmse));
+    add(errors, "err_max_abs", true, counter(e, bench::kErrMaxAbs));
   }
-  add(times, "bake", false, counter(e, "bake_ms"));
+  add(times, "bake", false, counter(e, bench::kBakeMs));
   add(times, "frame", true, e.medianMs);
 }
 
@@ -54,15 +57,15 @@ Table<const BenchEntry*> lightmapTable() {
       textColumn("backend", backendOf),
       markedTextColumn("mode", [](const BenchEntry& e) { return e.name.mode; }),
       numberColumn("N", lightmapResolution),
-      counterColumn("bake ms", "bake_ms"),
-      counterColumn("bake runs", "bake_runs"),
+      counterColumn("bake ms", bench::kBakeMs),
+      counterColumn("bake runs", bench::kBakeRuns),
       numberColumn("median frame ms", [](const BenchEntry& e) { return e.medianMs; }),
       cpuColumn(),
       cvColumn(),
-      counterColumn("err_rmse", "err_rmse"),
-      counterColumn("err_max_abs", "err_max_abs"),
-      counterColumn("err_psnr_db", "err_psnr_db"),
-      counterColumn("err_perceptual_fail", "err_perceptual_fail"),
+      counterColumn("err_rmse", bench::kErrRmse),
+      counterColumn("err_max_abs", bench::kErrMaxAbs),
+      counterColumn("err_psnr_db", bench::kErrPsnrDb),
+      counterColumn("err_perceptual_fail", bench::kErrPerceptualFail),
   };
   table.failure = [](const BenchEntry* e) { return failureOf(*e); };
   table.keyColumns = 2;
@@ -73,7 +76,7 @@ Table<const BenchEntry*> lightmapTable() {
 
 void lightmapSection(std::ostream& out, const BenchModel& m, const Entries& candidates, bool byBackend) {
   const Entries maps = filter(candidates, [](const BenchEntry& e) {
-    return e.name.kind == "frame" && e.medianMs && lightmapResolution(e);
+    return e.name.kind == bench::kFrame && e.medianMs && lightmapResolution(e);
   });
   if (maps.empty()) return;
   out << "<h2 id=\"lightmap\">Lightmap resolution</h2>\n<p class=\"note\">The <code>lightmap-N</code> modes: the "
@@ -93,7 +96,7 @@ void lightmapSection(std::ostream& out, const BenchModel& m, const Entries& cand
     out << "<h3>" << escapeText(scene) << "</h3>\n<div class=\"plotbox\">" << svg::render(plots.errors)
         << svg::render(plots.times) << "</div>\n";
     for (const BenchEntry* e : candidates)  // the real-time point of the same scene
-      if (e->name.kind == "frame" && e->name.scene == scene && e->name.mode == "realtime") rows.push_back(e);
+      if (e->name.kind == bench::kFrame && e->name.scene == scene && e->name.mode == "realtime") rows.push_back(e);
     writeTable(out, lightmapTable(), rows);
   }
 }

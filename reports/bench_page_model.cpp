@@ -1,6 +1,7 @@
 #include "reports/bench_page_model.h"
 
 #include "reports/bench_report.h"
+#include "results/bench_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,8 @@
 #include <string_view>
 
 namespace reports::benchpages {
+
+namespace bench = results::bench;
 
 BenchModel::BenchModel(const Json& b)
     : bench(b), set(readBenchFile(b)), backends(benchBackends(b)), twoTerm(twoTermFits(set)) {
@@ -51,8 +54,8 @@ std::string fmt(double v, int digits) {
 
 std::string fmt(const std::optional<double>& v, int digits) { return v ? fmt(*v, digits) : "-"; }
 
-std::optional<double> counter(const BenchEntry& e, const std::string& key) {
-  const auto it = e.counters.find(key);
+std::optional<double> counter(const BenchEntry& e, std::string_view key) {
+  const auto it = e.counters.find(std::string(key));
   if (it == e.counters.end()) return std::nullopt;
   return it->second;
 }
@@ -67,7 +70,7 @@ std::optional<double> twoTermRatio(const BenchModel& m, const BenchEntry& e) {
 }
 
 std::optional<double> limitRatio(const BenchEntry& e) {
-  const auto limit = counter(e, "limit_ms");
+  const auto limit = counter(e, bench::kLimitMs);
   if (!limit || !(*limit > 0) || !e.medianMs) return std::nullopt;
   return *e.medianMs / *limit;
 }
@@ -81,16 +84,16 @@ std::vector<std::string> backendsOf(const Entries& entries) {
   return backends;
 }
 
-bool isPrepare(const BenchEntry& e) { return e.name.kind == "prepare"; }
+bool isPrepare(const BenchEntry& e) { return e.name.kind == bench::kPrepare; }
 
 bool isBroken(const BenchEntry& e) {
-  const auto pixels = counter(e, "err_nonfinite_pixels");
+  const auto pixels = counter(e, bench::kErrNonfinitePixels);
   return pixels && *pixels > 0;
 }
 
 bool hasError(const BenchEntry& e) {
-  const auto rmse = counter(e, "err_rmse");
-  return e.name.kind == "frame" && e.medianMs && rmse && std::isfinite(*rmse) && !isBroken(e);
+  const auto rmse = counter(e, bench::kErrRmse);
+  return e.name.kind == bench::kFrame && e.medianMs && rmse && std::isfinite(*rmse) && !isBroken(e);
 }
 
 std::optional<double> lightmapResolution(const BenchEntry& e) {

@@ -44,7 +44,7 @@ Entries ofScene(const Entries& entries, const std::string& scene);
 std::string fmt(double v, int digits = 4);
 std::string fmt(const std::optional<double>& v, int digits = 4);
 
-std::optional<double> counter(const BenchEntry& e, const std::string& key);
+std::optional<double> counter(const BenchEntry& e, std::string_view key);  // key: results/bench_names.h
 // The median over limit_ms (docs/performance.md, the physical limit).
 std::optional<double> limitRatio(const BenchEntry& e);
 // The median over the entry's two-term estimate (its backend's fit at its

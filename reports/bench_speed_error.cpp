@@ -8,6 +8,7 @@
 #include "reports/bench_table.h"
 #include "reports/html_escape.h"
 #include "reports/svg_plot.h"
+#include "results/bench_names.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,8 @@
 #include <utility>
 
 namespace reports {
+
+namespace bench = results::bench;
 
 std::vector<bool> paretoFront(const std::vector<std::pair<double, double>>& points) {
   std::vector<bool> front(points.size(), true);
@@ -88,14 +91,14 @@ Table<const BenchEntry*> paretoTable(const BenchModel& m, const std::map<const B
       numberColumn("max ms", [](const BenchEntry& e) { return e.maxMs; }),
       cvColumn(),
       numberColumn("n", [](const BenchEntry& e) { return std::optional<double>(e.count); }),
-      counterColumn("err_rmse", "err_rmse"),
-      counterColumn("err_max_abs", "err_max_abs"),
-      counterColumn("err_psnr_db", "err_psnr_db"),
+      counterColumn("err_rmse", bench::kErrRmse),
+      counterColumn("err_max_abs", bench::kErrMaxAbs),
+      counterColumn("err_psnr_db", bench::kErrPsnrDb),
   };
   // The lightmap modes carry their bake time: the price paid before the frame.
-  if (withBake) table.columns.push_back(counterColumn("bake ms", "bake_ms"));
+  if (withBake) table.columns.push_back(counterColumn("bake ms", bench::kBakeMs));
   // The shadow-map modes carry their shadow passes' share of the frame.
-  if (withShadowPasses) table.columns.push_back(counterColumn("shadow pass ms", "shadow_pass_ms"));
+  if (withShadowPasses) table.columns.push_back(counterColumn("shadow pass ms", bench::kShadowPassMs));
   table.columns.push_back(numberColumn("\u00d7 limit", limitRatio, 3));
   // The time over the backend's two-term estimate for the mode's load.
   table.columns.push_back(
@@ -108,7 +111,7 @@ Table<const BenchEntry*> paretoTable(const BenchModel& m, const std::map<const B
 void scatterSection(std::ostream& out, const BenchModel& m, const std::string& scene, const Entries& points,
                     const Entries& broken, bool byBackend) {
   std::vector<TimeError> te;
-  for (const BenchEntry* e : points) te.emplace_back(*e->medianMs, *counter(*e, "err_rmse"));
+  for (const BenchEntry* e : points) te.emplace_back(*e->medianMs, *counter(*e, bench::kErrRmse));
   const std::vector<bool> front = paretoFront(te);
   out << "<h3>" << escapeText(scene) << "</h3>\n";
 
@@ -135,10 +138,10 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
   std::map<const BenchEntry*, bool> onFront;
   for (std::size_t i = 0; i < points.size(); ++i) onFront[points[i]] = front[i];
   for (const BenchEntry* e : broken) onFront[e] = false;
-  const auto bakes = [](const BenchEntry* e) { return counter(*e, "bake_ms").has_value(); };
+  const auto bakes = [](const BenchEntry* e) { return counter(*e, bench::kBakeMs).has_value(); };
   const bool withBake =
       std::any_of(points.begin(), points.end(), bakes) || std::any_of(broken.begin(), broken.end(), bakes);
-  const auto shadowPasses = [](const BenchEntry* e) { return counter(*e, "shadow_pass_ms").has_value(); };
+  const auto shadowPasses = [](const BenchEntry* e) { return counter(*e, bench::kShadowPassMs).has_value(); };
   const bool withShadowPasses = std::any_of(points.begin(), points.end(), shadowPasses) ||
                                 std::any_of(broken.begin(), broken.end(), shadowPasses);
   std::vector<std::size_t> order(points.size());
@@ -153,7 +156,7 @@ void scatterSection(std::ostream& out, const BenchModel& m, const std::string& s
   writeTable(out, paretoTable(m, onFront, withBake, withShadowPasses), rows);
 }
 
-bool isShadowMapMode(const BenchEntry& e) { return e.name.kind == "frame" && e.name.mode.rfind("shadows-", 0) == 0; }
+bool isShadowMapMode(const BenchEntry& e) { return e.name.kind == bench::kFrame && e.name.mode.rfind("shadows-", 0) == 0; }
 
 }  // namespace
 
@@ -166,7 +169,7 @@ void speedErrorSection(std::ostream& out, const BenchModel& m, const Entries& ca
          "front, and is listed, marked broken, after the points of its scene.</p>\n";
   const Entries withError = filter(candidates, hasError);
   const Entries broken =
-      filter(candidates, [](const BenchEntry& e) { return e.name.kind == "frame" && e.medianMs && isBroken(e); });
+      filter(candidates, [](const BenchEntry& e) { return e.name.kind == bench::kFrame && e.medianMs && isBroken(e); });
   if (withError.empty() && broken.empty()) {
     out << "<p>No frame benchmark has error counters.</p>\n";
     return;

@@ -2,12 +2,15 @@
 
 #include "reports/html_escape.h"
 #include "reports/html_sections.h"
+#include "results/bench_names.h"
 
 #include <algorithm>
 #include <set>
 #include <utility>
 
 namespace reports::benchpages {
+
+namespace bench = results::bench;
 
 std::string valueCell(const std::optional<double>& value, int digits) { return html::numberCell(fmt(value, digits)); }
 
@@ -21,16 +24,16 @@ EntryColumn numberColumn(std::string header, EntryValue value, int digits) {
           }};
 }
 
-EntryColumn counterColumn(std::string header, const std::string& key) {
+EntryColumn counterColumn(std::string header, std::string_view key) {
   return numberColumn(std::move(header), [key](const BenchEntry& e) { return counter(e, key); });
 }
 
 std::string brokenMark(const BenchEntry& e) {
   std::string mark;
-  if (isBroken(e)) mark += " <span class=\"err\">broken: " + fmt(counter(e, "err_nonfinite_pixels")) + " non-finite pixels</span>";
+  if (isBroken(e)) mark += " <span class=\"err\">broken: " + fmt(counter(e, bench::kErrNonfinitePixels)) + " non-finite pixels</span>";
   // A device time its wall time rules out (suite/bench/time_source.h): the
   // entry is wall-timed, and says why.
-  if (counter(e, "device_time_flagged"))
+  if (counter(e, bench::kDeviceTimeFlagged))
     mark += " <span class=\"err\">" + escapeText(e.label.empty() ? "wall time: a device time was flagged" : e.label) + "</span>";
   return mark;
 }
@@ -85,20 +88,20 @@ std::vector<NumberColumn> numberColumns(const Entries& entries) {
       {"CV %", [](const BenchEntry& e) { return e.cv ? std::optional(*e.cv * 100) : std::nullopt; }, 3, true},
       {"n", [](const BenchEntry& e) { return e.count ? std::optional<double>(e.count) : std::nullopt; }},
   };
-  const std::vector<std::pair<std::string, std::string>> known = {
-      {"wall_ms", "wall ms"}, {"device_ms", "device ms"}, {"pixels", "pixels"}, {"triangles", "triangles"}, {"lights", "lights"},
-      {"lights_per_pixel", "lights/pixel"}, {"pixels_per_s", "pixels/s"},
-      {"pixel_light_evals_per_s", "pixel-light evals/s"}, {"err_rmse", "err_rmse"},
-      {"err_max_abs", "err_max_abs"}, {"err_psnr_db", "err_psnr_db"},
-      {"err_perceptual_fail", "err_perceptual_fail"}, {"err_nonfinite_pixels", "err_nonfinite_pixels"},
-      {"bake_ms", "bake ms"}, {"bake_runs", "bake runs"},
-      {"lightmap_texels", "lightmap texels"}, {"flops_per_pixel_light", "flops/pixel-light"},
-      {"limit_ms", "limit ms"}, {"device_time_flagged", "device time flagged"}};
+  const std::vector<std::pair<std::string_view, std::string>> known = {
+      {bench::kWallMs, "wall ms"}, {bench::kDeviceMs, "device ms"}, {bench::kPixels, "pixels"}, {bench::kTriangles, "triangles"}, {bench::kLights, "lights"},
+      {bench::kLightsPerPixel, "lights/pixel"}, {bench::kPixelsPerS, "pixels/s"},
+      {bench::kPixelLightEvalsPerS, "pixel-light evals/s"}, {bench::kErrRmse, "err_rmse"},
+      {bench::kErrMaxAbs, "err_max_abs"}, {bench::kErrPsnrDb, "err_psnr_db"},
+      {bench::kErrPerceptualFail, "err_perceptual_fail"}, {bench::kErrNonfinitePixels, "err_nonfinite_pixels"},
+      {bench::kBakeMs, "bake ms"}, {bench::kBakeRuns, "bake runs"},
+      {bench::kLightmapTexels, "lightmap texels"}, {bench::kFlopsPerPixelLight, "flops/pixel-light"},
+      {bench::kLimitMs, "limit ms"}, {bench::kDeviceTimeFlagged, "device time flagged"}};
   for (const auto& [key, header] : known)
     columns.push_back({header, [key = key](const BenchEntry& e) { return counter(e, key); }});
   columns.push_back({"\u00d7 limit", limitRatio, 3});
   std::set<std::string> seen;
-  for (const auto& [key, header] : known) seen.insert(key);
+  for (const auto& [key, header] : known) seen.insert(std::string(key));
   for (const BenchEntry* e : entries)
     for (const auto& [key, value] : e->counters)
       if (seen.insert(key).second)

@@ -42,7 +42,7 @@ using EntryColumn = Column<const BenchEntry*>;
 using EntryValue = std::function<std::optional<double>(const BenchEntry&)>;
 EntryColumn textColumn(std::string header, std::function<std::string(const BenchEntry&)> text);
 EntryColumn numberColumn(std::string header, EntryValue value, int digits = 4);
-EntryColumn counterColumn(std::string header, const std::string& key);  // numberColumn of counter(e, key)
+EntryColumn counterColumn(std::string header, std::string_view key);  // numberColumn of counter(e, key)
 // textColumn, with " broken: N non-finite pixels" in red after the text of a
 // broken benchmark (isBroken).
 EntryColumn markedTextColumn(std::string header, std::function<std::string(const BenchEntry&)> text);

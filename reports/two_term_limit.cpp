@@ -1,5 +1,7 @@
 #include "reports/two_term_limit.h"
 
+#include "results/bench_names.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -36,8 +38,8 @@ std::optional<TwoTermFit> fitTwoTerm(const std::vector<TwoTermPoint>& points) {
 }
 
 std::optional<TwoTermPoint> twoTermPointOf(const BenchEntry& e) {
-  const auto pixels = e.counters.find("pixels");
-  const auto lights = e.counters.find("lights_per_pixel");
+  const auto pixels = e.counters.find(std::string(results::bench::kPixels));
+  const auto lights = e.counters.find(std::string(results::bench::kLightsPerPixel));
   if (pixels == e.counters.end() || lights == e.counters.end() || !e.medianMs) return std::nullopt;
   return TwoTermPoint{pixels->second, pixels->second * lights->second, *e.medianMs};
 }

@@ -5,6 +5,7 @@
 #include "baking/bake.h"
 #include "baking/overlap_map.h"
 #include "imaging/image_files.h"
+#include "imaging/tests/scratch_folder_test.h"
 #include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -28,13 +29,10 @@ const std::string kSourceDir = LIGHTCTS_SOURCE_DIR;
 // (the fifth demoted), a baked light and a box.
 const std::string kFiveOverlapping = kSourceDir + "/app/tests/scenes/bake-five-overlapping.json";
 
-class BakeCommandTest : public ::testing::Test {
+class BakeCommandTest : public imaging::testing::ScratchFolderTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-bake-command-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    ScratchFolderTest::SetUp();
     if (const char* saved = std::getenv("LIGHTCTS_CACHE_DIR")) savedCacheDir_ = saved;
     ::setenv("LIGHTCTS_CACHE_DIR", (dir_ / "cache").c_str(), 1);  // a cache of this test's own
   }
@@ -44,7 +42,7 @@ class BakeCommandTest : public ::testing::Test {
     } else {
       ::unsetenv("LIGHTCTS_CACHE_DIR");
     }
-    fs::remove_all(dir_);
+    ScratchFolderTest::TearDown();
   }
 
   int bake(const std::string& scene, const std::string& out, bool noCache = false) {
@@ -58,7 +56,6 @@ class BakeCommandTest : public ::testing::Test {
     return nlohmann::json::parse(in);
   }
 
-  fs::path dir_;
   std::optional<std::string> savedCacheDir_;
   std::ostringstream out_, err_;
 };

@@ -5,6 +5,7 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "imaging/image_files.h"
+#include "imaging/tests/scratch_folder_test.h"
 #include "lighting/frame.h"
 #include "reference/light_budget.h"
 #include "reports/budget_maps.h"
@@ -26,14 +27,10 @@ using reports::countBinColour;
 namespace fs = std::filesystem;
 const fs::path kScenes = fs::path(LIGHTCTS_SOURCE_DIR) / "suite/scenes";
 
-class BudgetCommand : public ::testing::Test {
+// The command creates the output folder: it does not exist when a test starts.
+class BudgetCommand : public imaging::testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-budget-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  BudgetCommand() : ScratchFolderTest(false) {}
 
   int run(const std::string& scene, int frame, bool frameGiven, bool allFrames) {
     SceneArguments args;
@@ -43,7 +40,6 @@ class BudgetCommand : public ::testing::Test {
     return runBudgetCommand(args, allFrames, dir_.string(), out_, err_);
   }
 
-  fs::path dir_;
   std::ostringstream out_, err_;
 };
 

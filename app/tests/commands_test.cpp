@@ -3,6 +3,7 @@
 #include "app/commands.h"
 #include "app/exit_status.h"
 #include "imaging/image_files.h"
+#include "imaging/tests/scratch_folder_test.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,15 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class CommandsTest : public ::testing::Test {
+class CommandsTest : public imaging::testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-commands-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
 
   std::string writeScene(const std::string& json) {
     const std::string path = (dir_ / "scene.json").string();
@@ -32,7 +26,6 @@ class CommandsTest : public ::testing::Test {
     return path;
   }
 
-  fs::path dir_;
   std::ostringstream out_, err_;
 };
 

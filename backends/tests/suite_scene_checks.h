@@ -10,11 +10,10 @@
 #include "conformance/reference_cache.h"
 #include "conformance/scene_catalogue.h"
 #include "conformance/scene_check.h"
+#include "runner/expected_failures.h"
 #include "scene_input/scene_loader.h"
 
 #include <filesystem>
-#include <fstream>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -26,22 +25,15 @@ inline conformance::SceneReferences cachedSceneReferences(const std::filesystem:
   return conformance::SceneReferences(baking::prepareBakedScene(std::move(scene)), caching);
 }
 
-// The tests the expected-failures files of `folder` (suite/expected-failures/,
-// one file per driver, each naming its own combinations' tests) list: the
-// drivers' known mismatches, which a test of a variant must not count
-// against them either. Only the names; the format is runner/expected_failures.h's.
-inline std::set<std::string> expectedFailingTests(const std::filesystem::path& folder) {
-  std::set<std::string> tests;
-  for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(folder)) {
-    if (file.path().extension() != ".txt") continue;
-    std::ifstream in(file.path());
-    for (std::string line; std::getline(in, line);) {
-      if (line.empty() || line[0] == '#') continue;
-      const std::size_t comma = line.find(',');
-      if (comma != std::string::npos) tests.insert(line.substr(0, comma));
-    }
-  }
-  return tests;
+// The expected-failures files of `folder` (suite/expected-failures/, one
+// file per driver, each naming its own combinations' tests), read by the
+// runner's reader: the drivers' known mismatches, which a test of a variant
+// must not count against them either.
+inline runner::ExpectedFailures suiteExpectedFailures(const std::filesystem::path& folder) {
+  runner::ExpectedFailures expected;
+  for (const std::filesystem::directory_entry& file : std::filesystem::directory_iterator(folder))
+    if (file.path().extension() == ".txt") expected.load(file.path());
+  return expected;
 }
 
 }  // namespace backends::testing

@@ -134,8 +134,8 @@ TEST(VulkanSpecialisation, FullShaderPassesEverySceneAsTheSpecialisedDoes) {
   fullOptions.variant.specialised = false;
   auto full = createOrSkip(fullOptions);
   if (!full) GTEST_SKIP() << "no Vulkan device";
-  const std::set<std::string> expectedFailures =
-      backends::testing::expectedFailingTests(LIGHTCTS_EXPECTED_FAILURES_DIR);
+  const runner::ExpectedFailures expectedFailures =
+      backends::testing::suiteExpectedFailures(LIGHTCTS_EXPECTED_FAILURES_DIR);
   int scenes = 0;
   for (const conformance::SceneFile& file : conformance::findSceneFiles(LIGHTCTS_SCENES_DIR)) {
     conformance::SceneReferences references =
@@ -143,7 +143,7 @@ TEST(VulkanSpecialisation, FullShaderPassesEverySceneAsTheSpecialisedDoes) {
     const conformance::SceneCheck check = conformance::checkScene(references, *full);
     ++scenes;
     const std::string test = file.caseName() + ".vulkan";
-    if (expectedFailures.contains(test)) continue;
+    if (expectedFailures.find(test)) continue;
     EXPECT_EQ(check.verdict, comparison::Verdict::Pass)
         << test << " with the full shader: " << check.evidence().comparison.failingPixels
         << " failing pixels, tightness " << check.evidence().comparison.maxErrorOverTolerance;

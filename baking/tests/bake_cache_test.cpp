@@ -2,6 +2,7 @@
 // the key; damaged files are misses that re-bake, never errors.
 #include "baking/bake_cache.h"
 #include "baking/tests/test_scenes.h"
+#include "imaging/tests/scratch_folder_test.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -17,18 +18,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class BakeCacheTest : public ::testing::Test {
+// The bake cache creates its folder (dir_/bakes) itself.
+class BakeCacheTest : public imaging::testing::ScratchFolderTest {
  protected:
+  BakeCacheTest() : ScratchFolderTest(false) {}
   void SetUp() override {
-    // A parameterised test's name is "Name/param": one folder, not a
-    // folder in a folder that TearDown would leave behind.
-    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    std::replace(name.begin(), name.end(), '/', '-');
-    dir_ = fs::temp_directory_path() / ("lightcts-bake-cache-" + std::to_string(::getpid()) + "-" + name);
-    fs::remove_all(dir_);
+    ScratchFolderTest::SetUp();
     options_.cacheDirectory = (dir_ / "bakes").string();
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   static Scene scene() {
     Scene s;
@@ -56,7 +53,6 @@ class BakeCacheTest : public ::testing::Test {
     }
   }
 
-  fs::path dir_;
   BakeOptions options_;
 };
 

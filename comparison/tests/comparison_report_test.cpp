@@ -3,6 +3,7 @@
 #include "comparison/comparison_report.h"
 #include "comparison/tests/comparison_fixtures.h"
 #include "imaging/image_files.h"
+#include "imaging/tests/scratch_folder_test.h"
 
 #include <gtest/gtest.h>
 
@@ -37,15 +38,10 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 // A fresh folder per test, removed afterwards.
-class EvidenceFolder : public ::testing::Test {
+// The evidence writer creates its folder: it does not exist when a test starts.
+class EvidenceFolder : public imaging::testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("lightcts-comparison-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  EvidenceFolder() : ScratchFolderTest(false) {}
 };
 
 TEST(PrintComparison, FirstLineAndWorstPixels) {

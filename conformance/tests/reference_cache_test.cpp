@@ -1,5 +1,7 @@
 #include "conformance/reference_cache.h"
 
+#include "imaging/tests/scratch_folder_test.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -28,15 +30,10 @@ reference::ReferenceImages sample() {
   return images;
 }
 
-class ReferenceCacheTest : public ::testing::Test {
+class ReferenceCacheTest : public imaging::testing::ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-reference-cache-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  ReferenceCacheTest() : ScratchFolderTest(false) {}  // the cache creates its folder
   const std::string key_ = referenceCacheKey(std::string(64, 'a'), 0, {});
-  fs::path dir_;
 };
 
 TEST_F(ReferenceCacheTest, SecondAskIsReadBackBitForBit) {

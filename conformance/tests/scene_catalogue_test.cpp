@@ -1,5 +1,7 @@
 #include "conformance/scene_catalogue.h"
 
+#include "imaging/tests/scratch_folder_test.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -10,22 +12,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class SceneCatalogue : public ::testing::Test {
+class SceneCatalogue : public imaging::testing::ScratchFolderTest {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / ("lightcts-catalogue-" + std::to_string(::getpid()));
-    fs::remove_all(root_);
+    ScratchFolderTest::SetUp();
     for (const char* file : {"limits/b.json", "limits/a.json", "attenuation/z.json", "attenuation/notes.md"}) {
-      fs::create_directories((root_ / file).parent_path());
-      std::ofstream(root_ / file) << "{}";
+      fs::create_directories((dir_ / file).parent_path());
+      std::ofstream(dir_ / file) << "{}";
     }
   }
-  void TearDown() override { fs::remove_all(root_); }
-  fs::path root_;
 };
 
 TEST_F(SceneCatalogue, SuiteFolderGivesGroupsAndNamesSorted) {
-  const auto scenes = findSceneFiles(root_);
+  const auto scenes = findSceneFiles(dir_);
   ASSERT_EQ(scenes.size(), 3u);
   EXPECT_EQ(scenes[0].caseName(), "attenuation.z");
   EXPECT_EQ(scenes[1].caseName(), "limits.a");
@@ -33,15 +32,15 @@ TEST_F(SceneCatalogue, SuiteFolderGivesGroupsAndNamesSorted) {
 }
 
 TEST_F(SceneCatalogue, GroupFolderIsOneGroupEvenWithATrailingSlash) {
-  const auto scenes = findSceneFiles(root_.string() + "/limits/");
+  const auto scenes = findSceneFiles(dir_.string() + "/limits/");
   ASSERT_EQ(scenes.size(), 2u);
   EXPECT_EQ(scenes[0].caseName(), "limits.a");
 }
 
 TEST_F(SceneCatalogue, FolderWithoutScenesIsAnError) {
-  fs::create_directories(root_ / "empty");
-  EXPECT_THROW(findSceneFiles(root_ / "empty"), std::runtime_error);
-  EXPECT_THROW(findSceneFiles(root_ / "missing"), std::runtime_error);
+  fs::create_directories(dir_ / "empty");
+  EXPECT_THROW(findSceneFiles(dir_ / "empty"), std::runtime_error);
+  EXPECT_THROW(findSceneFiles(dir_ / "missing"), std::runtime_error);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // The benchmark pages of the hand-written bench.json (bench_sample.h).
 #include "reports/bench_data.h"
+#include "imaging/tests/scratch_folder_test.h"
 #include "reports/bench_report.h"
 #include "reports/html_page.h"
 #include "reports/html_report.h"
@@ -26,12 +27,7 @@ long long count(const std::string& text, const std::string& what) {
   return n;
 }
 
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using imaging::testing::readFile;
 
 // data-point of every point drawn as on the Pareto front.
 std::set<std::string> frontPoints(const std::string& html) {
@@ -124,15 +120,13 @@ TEST(BenchReport, PageFiles) {
   EXPECT_EQ(benchBackends(testing::sampleBench()), (std::vector<std::string>{"vulkan", "gl-egl", "gl-osmesa"}));
 }
 
-class BenchPages : public ::testing::Test {
+class BenchPages : public imaging::testing::ScratchFolderTest {
  protected:
+  BenchPages() : ScratchFolderTest(false) {}  // the report creates its folder
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-bench-report-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
+    ScratchFolderTest::SetUp();
     writeBenchReport(testing::sampleBench(), dir_);
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
 };
 
 TEST_F(BenchPages, WritesEveryPage) {

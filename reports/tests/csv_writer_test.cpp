@@ -1,4 +1,5 @@
 #include "reports/csv_writer.h"
+#include "imaging/tests/scratch_folder_test.h"
 #include "reports/tests/sample_results.h"
 #include "runner/expected_failures.h"
 
@@ -14,12 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using comparison::Verdict;
 
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using imaging::testing::readFile;
 
 TEST(RunCsv, ResultsListEveryTestWithItsVerdictAndSeconds) {
   EXPECT_EQ(resultsCsv(testing::sampleResults()),

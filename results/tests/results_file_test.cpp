@@ -3,8 +3,9 @@
 // docs/results-format.md promises to tolerate is read.
 #include "results/results_file.h"
 
+#include "imaging/tests/scratch_folder_test.h"
+
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -33,25 +34,24 @@ RunRecord twoTestRun() {
   return run;
 }
 
-class ResultsFile : public ::testing::Test {
+class ResultsFile : public imaging::testing::ScratchFolderTest {
  protected:
-  void TearDown() override { fs::remove(file_); }
-  void write(const Json& json) { std::ofstream(file_) << json.dump(1); }
+  void write(const Json& json) { std::ofstream(file()) << json.dump(1); }
   std::string refusal(const Json& json) {
     write(json);
     try {
-      readResultsFile(file_);
+      readResultsFile(file());
     } catch (const ResultsFileError& e) {
       return e.what();
     }
     return "(read)";
   }
-  fs::path file_ = fs::temp_directory_path() / ("lightcts-results-file-" + std::to_string(getpid()) + ".json");
+  fs::path file() const { return dir_ / "results.json"; }
 };
 
 TEST_F(ResultsFile, WhatTheWriterWritesReadsBack) {
   write(twoTestRun().toJson());
-  const RunRecord run = readResultsFile(file_);
+  const RunRecord run = readResultsFile(file());
   ASSERT_EQ(run.tests.size(), 2u);
   EXPECT_EQ(run.tests[1].name, "g.b.vulkan");
   ASSERT_TRUE(run.tests[1].timingsMs.has_value());
@@ -76,7 +76,7 @@ TEST_F(ResultsFile, AMissingKeyIsRefusedByItsPath) {
     edited[pointer.parent_pointer()].erase(pointer.back());
     const std::string said = refusal(edited);
     EXPECT_NE(said.find(message), std::string::npos) << pointer.to_string() << ": " << said;
-    EXPECT_EQ(said.rfind(file_.string(), 0), 0u) << said;  // the message starts with the file
+    EXPECT_EQ(said.rfind(file().string(), 0), 0u) << said;  // the message starts with the file
   }
 }
 
@@ -90,9 +90,9 @@ TEST_F(ResultsFile, AKeyOfAnotherTypeIsRefused) {
 }
 
 TEST_F(ResultsFile, NotJsonAndNoFileAreRefused) {
-  std::ofstream(file_) << "{\"format\": ";
-  EXPECT_THROW(readResultsFile(file_), ResultsFileError);
-  EXPECT_THROW(readResultsFile(file_.string() + ".absent"), ResultsFileError);
+  std::ofstream(file()) << "{\"format\": ";
+  EXPECT_THROW(readResultsFile(file()), ResultsFileError);
+  EXPECT_THROW(readResultsFile(file().string() + ".absent"), ResultsFileError);
 }
 
 // docs/results-format.md: later versions' keys may be missing, words no
@@ -110,7 +110,7 @@ TEST_F(ResultsFile, OlderFilesUnknownWordsAndUnknownKeysAreRead) {
   edited.erase("mutants");
   edited["tests"][0]["verdict"] = "Maybe";
   write(edited);
-  const RunRecord run = readResultsFile(file_);
+  const RunRecord run = readResultsFile(file());
   EXPECT_FALSE(run.tests[1].timingsMs.has_value());
   EXPECT_TRUE(comparison::isRunFailure(run.tests[0].verdict));  // a word it does not know is no pass
 }

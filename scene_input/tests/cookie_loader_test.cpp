@@ -1,6 +1,7 @@
 // SPEC 2's `cookie` (SPEC 3.10): the loader reads the images, relative to the
 // scene file, and refuses bad ones with the JSON path and the file.
 #include "imaging/image_files.h"
+#include "imaging/tests/scratch_folder_test.h"
 #include "scene_input/scene_loader.h"
 
 #include <gtest/gtest.h>
@@ -18,11 +19,10 @@ using namespace lighting;
 
 namespace fs = std::filesystem;
 
-class CookieLoader : public ::testing::Test {
+class CookieLoader : public imaging::testing::ScratchFolderTest {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lightcts-cookie-loader-" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
+    ScratchFolderTest::SetUp();
     fs::create_directories(dir_ / "images");
     // 2x2 RGBA: alpha 0, 85, 170, 255 (n / 255), red 255 everywhere.
     imaging::writePng8((dir_ / "images/alpha.png").string(), 2, 2, 4,
@@ -33,7 +33,6 @@ class CookieLoader : public ::testing::Test {
     imaging::writePng8((dir_ / "images/face4.png").string(), 4, 4, 1, std::vector<std::uint8_t>(16, 128));
     imaging::writePng8((dir_ / "images/face2.png").string(), 2, 2, 1, std::vector<std::uint8_t>(4, 128));
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // A scene with one light around `light`, as if read from dir_/scene.json.
   Scene load(const std::string& light) const { return loadSceneText(text(light), (dir_ / "scene.json").string()); }
@@ -49,7 +48,6 @@ class CookieLoader : public ::testing::Test {
     ADD_FAILURE() << "loaded: " << light;
     return {};
   }
-  fs::path dir_;
 };
 
 TEST_F(CookieLoader, DirectionalSpotAndPointCookiesLoadTheirImages) {

@@ -1,5 +1,6 @@
 #include "suite/bench/bench_registrar.h"
 
+#include "results/bench_names.h"
 #include "suite/bench/frame_timer.h"
 
 #include <algorithm>
@@ -67,7 +68,7 @@ Registrar::Registrar(std::shared_ptr<RunState> run) : run_(std::move(run)) {
   }
 }
 
-std::string Registrar::name(const char* kind, const std::string& scene, const std::string& mode,
+std::string Registrar::name(std::string_view kind, const std::string& scene, const std::string& mode,
                             const std::string& x) const {
   std::string text(kind);
   text.append("/").append(run_->suffix()).append("/").append(scene).append("/").append(mode);
@@ -78,7 +79,7 @@ std::string Registrar::name(const char* kind, const std::string& scene, const st
 void Registrar::frame(const std::string& scene, const std::string& mode, const std::string& x, const LazyFrame& bench,
                       bool withReadback) {
   auto run = run_;
-  const std::string benchmarkName = name(withReadback ? "frame_readback" : "frame", scene, mode, x);
+  const std::string benchmarkName = name(withReadback ? results::bench::kFrameReadback : results::bench::kFrame, scene, mode, x);
   if (bench->hasError()) errorCandidates_.push_back({benchmarkName, bench});
   configure(benchmark::RegisterBenchmark(benchmarkName.c_str(),
                                          [run, bench, withReadback](benchmark::State& st) {
@@ -91,7 +92,7 @@ void Registrar::frame(const std::string& scene, const std::string& mode, const s
 void Registrar::upload(const std::string& scene, const std::string& mode, const std::string& x, MakeFrame make) {
   auto run = run_;
   auto made = std::make_shared<std::optional<lighting::Frame>>();
-  configure(benchmark::RegisterBenchmark(name("upload", scene, mode, x).c_str(),
+  configure(benchmark::RegisterBenchmark(name(results::bench::kUpload, scene, mode, x).c_str(),
                                          [run, made, make = std::move(make)](benchmark::State& st) {
                                            if (makeOnce(st, *made, make)) timeUpload(st, *run, **made);
                                          }),
@@ -100,7 +101,7 @@ void Registrar::upload(const std::string& scene, const std::string& mode, const 
 
 void Registrar::pipeline(const std::string& scene, const std::string& mode, const LazyFrame& bench) {
   auto run = run_;
-  configure(benchmark::RegisterBenchmark(name("pipeline", scene, mode, "").c_str(),
+  configure(benchmark::RegisterBenchmark(name(results::bench::kPipeline, scene, mode, "").c_str(),
                                          [run, bench](benchmark::State& st) {
                                            if (const BenchFrame* made = madeFrame(st, *bench))
                                              timePipeline(st, *run, *made);

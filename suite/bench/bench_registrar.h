@@ -46,7 +46,7 @@ class Registrar {
   const std::vector<ErrorCandidate>& errorCandidates() const { return errorCandidates_; }
 
  private:
-  std::string name(const char* kind, const std::string& scene, const std::string& mode, const std::string& x) const;
+  std::string name(std::string_view kind, const std::string& scene, const std::string& mode, const std::string& x) const;
 
   std::shared_ptr<RunState> run_;
   Timing frameTiming_, pipelineTiming_;

@@ -1,5 +1,6 @@
 #include "suite/bench/frame_timer.h"
 
+#include "results/bench_names.h"
 #include "suite/bench/lighting_cost.h"
 #include "suite/bench/time_source.h"
 #include "suite/bench/wall_clock.h"
@@ -16,40 +17,40 @@ namespace {
 void setLoadCounters(benchmark::State& state, const RunState& run, const FrameLoad& load, bool specularLobe) {
   auto& c = state.counters;
   const double iterations = double(state.iterations());
-  c["pixels"] = load.pixels;
-  c["triangles"] = load.triangles;
-  c["lights"] = double(load.keptLights);
-  c["lights_per_pixel"] = load.lightsPerPixel;
-  c["pixels_per_s"] = benchmark::Counter(load.pixels * iterations, benchmark::Counter::kIsRate);
-  c["pixel_light_evals_per_s"] =
+  c[std::string(results::bench::kPixels)] = load.pixels;
+  c[std::string(results::bench::kTriangles)] = load.triangles;
+  c[std::string(results::bench::kLights)] = double(load.keptLights);
+  c[std::string(results::bench::kLightsPerPixel)] = load.lightsPerPixel;
+  c[std::string(results::bench::kPixelsPerS)] = benchmark::Counter(load.pixels * iterations, benchmark::Counter::kIsRate);
+  c[std::string(results::bench::kPixelLightEvalsPerS)] =
       benchmark::Counter(load.pixels * load.lightsPerPixel * iterations, benchmark::Counter::kIsRate);
   if (run.settings.peakGflops && run.flopsPerPixelLight > 0) {
     // A frame with srp materials evaluates the lobe per light too (counted
     // as if every pixel had it: the field's specular modes are srp throughout).
     const double flops = run.flopsPerPixelLight + (specularLobe ? flopsOfSpecularLobe() : 0.0);
-    c["flops_per_pixel_light"] = flops;
-    c["limit_ms"] = load.pixels * load.lightsPerPixel * flops / (*run.settings.peakGflops * 1e9) * 1e3;
+    c[std::string(results::bench::kFlopsPerPixelLight)] = flops;
+    c[std::string(results::bench::kLimitMs)] = load.pixels * load.lightsPerPixel * flops / (*run.settings.peakGflops * 1e9) * 1e3;
   }
 }
 
 void setErrorCounters(benchmark::State& state, const ImageError& e) {
   auto& c = state.counters;
-  c["err_rmse"] = e.rmse;
-  c["err_max_abs"] = e.maxAbs;
-  c["err_psnr_db"] = e.psnrDb;
-  c["err_perceptual_fail"] = e.perceptualFail;
+  c[std::string(results::bench::kErrRmse)] = e.rmse;
+  c[std::string(results::bench::kErrMaxAbs)] = e.maxAbs;
+  c[std::string(results::bench::kErrPsnrDb)] = e.psnrDb;
+  c[std::string(results::bench::kErrPerceptualFail)] = e.perceptualFail;
   // NaN or infinite pixels: the mode is broken; err_max_abs is infinite and
   // err_rmse, err_psnr_db NaN, which the JSON writes as null.
-  c["err_nonfinite_pixels"] = double(e.nonFinitePixels);
+  c[std::string(results::bench::kErrNonfinitePixels)] = double(e.nonFinitePixels);
 }
 
 void setBakeCounters(benchmark::State& state, const BenchFrame& bench) {
   const BakeTime& bake = *bench.spec.bake;
   const double resolution = double(bench.frame.scene().objects.front().lightmapResolution);
   auto& c = state.counters;
-  c["bake_ms"] = bake.medianMs;
-  c["bake_runs"] = double(bake.runs);
-  c["lightmap_texels"] = resolution * resolution;
+  c[std::string(results::bench::kBakeMs)] = bake.medianMs;
+  c[std::string(results::bench::kBakeRuns)] = double(bake.runs);
+  c[std::string(results::bench::kLightmapTexels)] = resolution * resolution;
 }
 
 }  // namespace
@@ -96,14 +97,14 @@ void timeFrame(benchmark::State& state, RunState& run, const BenchFrame& bench, 
       state.SetIterationTime((useDevice ? *device : wall) / 1e3);
     }
     auto& c = state.counters;
-    c["wall_ms"] = benchmark::Counter(wallMs, benchmark::Counter::kAvgIterations);
+    c[std::string(results::bench::kWallMs)] = benchmark::Counter(wallMs, benchmark::Counter::kAvgIterations);
     if (deviceEveryTime && state.iterations() > 0)
-      c["device_ms"] = benchmark::Counter(deviceMs, benchmark::Counter::kAvgIterations);
+      c[std::string(results::bench::kDeviceMs)] = benchmark::Counter(deviceMs, benchmark::Counter::kAvgIterations);
     if (shadowEveryTime && state.iterations() > 0)
-      c["shadow_pass_ms"] = benchmark::Counter(shadowMs, benchmark::Counter::kAvgIterations);
+      c[std::string(results::bench::kShadowPassMs)] = benchmark::Counter(shadowMs, benchmark::Counter::kAvgIterations);
     setLoadCounters(state, run, bench.load, bench.frame.features.specularBrdf);
     if (flagged > 0 || run.wallTimeOnly.contains(&bench)) {
-      c["device_time_flagged"] = double(flagged);
+      c[std::string(results::bench::kDeviceTimeFlagged)] = double(flagged);
       char label[200];
       std::snprintf(label, sizeof label,
                     flagged > 0 ? "wall time: device time %.3g ms below half the wall time %.3g ms (a timer that missed work, or a stall outside its interval)"
@@ -137,7 +138,7 @@ void timePipeline(benchmark::State& state, RunState& run, const BenchFrame& benc
     state.SkipWithError(e.what());
     return;
   }
-  state.counters["lights"] = double(bench.load.keptLights);
+  state.counters[std::string(results::bench::kLights)] = double(bench.load.keptLights);
 }
 
 namespace {

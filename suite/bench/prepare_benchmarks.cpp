@@ -29,6 +29,7 @@
 #include "lighting/gpu_packing.h"
 #include "lighting/light_clusters.h"
 #include "lighting/shadow_mask_channels.h"
+#include "results/bench_names.h"
 #include "suite/bench/bench_reporters.h"
 #include "suite/bench/bench_scenes.h"
 #include "suite/bench/fresh_bake.h"
@@ -46,6 +47,9 @@
 
 namespace bench {
 namespace {
+
+// prepare/<rest>: the kind the bench pages know the CPU preparation by.
+std::string prepareName(const std::string& rest) { return std::string(results::bench::kPrepare) + rest; }
 
 using namespace lighting;
 
@@ -106,7 +110,7 @@ void timeFrame(benchmark::State& state, const std::shared_ptr<const PreparedScen
   const Frame frame = prepareFrame(prepared, 0);
   state.SetComplexityN(benchmark::IterationCount(itemCount));
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(itemCount));
-  state.counters["lights"] = double(frame.scene().lights.size());
+  state.counters[std::string(results::bench::kLights)] = double(frame.scene().lights.size());
   state.counters["objects"] = double(frame.scene().objects.size());
   state.counters["visible_lights"] = double(frame.selection.visible.size());
   state.counters["kept_lights"] =
@@ -158,7 +162,7 @@ void clusteredBinning(benchmark::State& state, int n) {
   }
   const ClusterGrid g = clusterGridFor(frame.view, grid);
   state.SetComplexityN(int(packed.size()));
-  state.counters["lights"] = double(packed.size());
+  state.counters[std::string(results::bench::kLights)] = double(packed.size());
   state.counters["cluster_tile"] = grid.tileSize;
   state.counters["cluster_slices"] = grid.depthSlices;
   state.counters["clusters"] = g.clusterCount();
@@ -179,7 +183,7 @@ void shadowMask(benchmark::State& state) {
   for (const ShadowMaskEntry& e : prepared->shadowMask.entries) (e.demoted ? demoted : holders) += 1;
   state.SetComplexityN(n);
   state.SetItemsProcessed(std::int64_t(state.iterations()) * n);
-  state.counters["lights"] = n;
+  state.counters[std::string(results::bench::kLights)] = n;
   state.counters["channel_holders"] = holders;
   state.counters["demoted"] = demoted;
   state.counters["lights_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
@@ -204,8 +208,8 @@ void curveLightmapBake(benchmark::State& state) {
   }
   state.SetComplexityN(texels);
   state.SetItemsProcessed(std::int64_t(state.iterations()) * texels);
-  state.counters["lightmap_texels"] = texels;
-  state.counters["lights"] = double(prepared->scene.lights.size());
+  state.counters[std::string(results::bench::kLightmapTexels)] = texels;
+  state.counters[std::string(results::bench::kLights)] = double(prepared->scene.lights.size());
   state.counters["texels_per_s"] = benchmark::Counter(texels, benchmark::Counter::kIsIterationInvariantRate);
 }
 
@@ -224,22 +228,22 @@ benchmark::internal::Benchmark* curve(benchmark::internal::Benchmark* b, const s
 void registerAll(const Settings& settings) {
   for (const bool perObject : {false, true}) {
     const std::string mode = perObject ? "per-object" : "all-lights";
-    curve(benchmark::RegisterBenchmark(("prepare/cpu/curve-lights/" + mode).c_str(),
+    curve(benchmark::RegisterBenchmark(prepareName("/cpu/curve-lights/" + mode).c_str(),
                                        [perObject](benchmark::State& s) { curveLights(s, perObject); }),
           settings.lightCounts());
   }
-  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-objects/per-object", curveObjects), settings.objectCounts());
-  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-lights/shadow-mask", shadowMask), settings.lightCounts());
-  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-lightmap/bake", curveLightmapBake), settings.lightmapTexels())
+  curve(benchmark::RegisterBenchmark(prepareName("/cpu/curve-objects/per-object").c_str(), curveObjects), settings.objectCounts());
+  curve(benchmark::RegisterBenchmark(prepareName("/cpu/curve-lights/shadow-mask").c_str(), shadowMask), settings.lightCounts());
+  curve(benchmark::RegisterBenchmark(prepareName("/cpu/curve-lightmap/bake").c_str(), curveLightmapBake), settings.lightmapTexels())
       ->UseRealTime();
   for (const bool perObject : {false, true}) {
     const std::string mode = perObject ? "per-object" : "all-lights";
-    common(benchmark::RegisterBenchmark(("prepare/cpu/lights64-1280x720/" + mode).c_str(),
+    common(benchmark::RegisterBenchmark(prepareName("/cpu/lights64-1280x720/" + mode).c_str(),
                                         [perObject](benchmark::State& s) { lights64(s, perObject); }));
   }
-  common(benchmark::RegisterBenchmark("prepare/cpu/lights64-1280x720/clustered-binning",
+  common(benchmark::RegisterBenchmark(prepareName("/cpu/lights64-1280x720/clustered-binning").c_str(),
                                       [](benchmark::State& s) { clusteredBinning(s, 64); }));
-  curve(benchmark::RegisterBenchmark("prepare/cpu/curve-lights/clustered-binning",
+  curve(benchmark::RegisterBenchmark(prepareName("/cpu/curve-lights/clustered-binning").c_str(),
                                      [](benchmark::State& s) { clusteredBinning(s, int(s.range(0))); }),
         settings.quick ? std::vector<int>{16, 256} : std::vector<int>{16, 64, 256, 1024});
 }

@@ -6,6 +6,7 @@
 #include "baking/bake.h"
 #include "lighting/frame.h"
 #include "reference/reference_renderer.h"
+#include "results/bench_names.h"
 #include "scene_input/scene_loader.h"
 
 #include <benchmark/benchmark.h>
@@ -29,9 +30,9 @@ void renderFrame(benchmark::State& state, const Scene& scene) {
     benchmark::DoNotOptimize(images.value.pixels.data());
   }
   const double pixels = double(scene.image.width) * scene.image.height;
-  state.counters["pixels_per_s"] = benchmark::Counter(pixels * state.iterations(), benchmark::Counter::kIsRate);
-  state.counters["pixel_light_evals_per_s"] = benchmark::Counter(double(evaluations), benchmark::Counter::kIsRate);
-  state.counters["triangles"] = double(renderer.triangleCount());
+  state.counters[std::string(results::bench::kPixelsPerS)] = benchmark::Counter(pixels * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters[std::string(results::bench::kPixelLightEvalsPerS)] = benchmark::Counter(double(evaluations), benchmark::Counter::kIsRate);
+  state.counters[std::string(results::bench::kTriangles)] = double(renderer.triangleCount());
 }
 
 Scene sphereOfTriangles(int width, int height, int targetTriangles) {
