@@ -45,7 +45,7 @@ int runBudgetCommand(const SceneArguments& args, bool allFrames, const std::stri
       previousLoss = budget.lossRgb;
       const fs::path dir = everyFrame ? fs::path(outDir) / ("frame-" + std::to_string(f)) : fs::path(outDir);
       runner::writeBudgetFrameFiles(dir, budget);
-      framesJson.push_back(runner::budgetFrameJson(frame, budget, popping));
+      framesJson.push_back(runner::budgetFrameRecord(frame, budget, popping).toJson());
       if (everyFrame) strip.push_back(runner::smallKeptMap(budget));
       out << "budget: " << frame.scene().name << " frame " << frame.index << ": " << budget.pixelsCut
           << " pixel(s) where a budget cuts a light, largest loss " << budget.largestLoss << "\n";

@@ -14,23 +14,14 @@
 namespace app {
 namespace {
 
-reports::Json readResults(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("run compare: cannot read " + path);
-  reports::Json results;
+// The records' reader refuses what a comparison cannot trust (a key missing:
+// the message names it), before anything is written.
+results::RunRecord readRun(const std::string& path) {
   try {
-    results = reports::Json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError("run compare: " + path + ": not JSON: " + e.what());
-  }
-  try {
-    // The records' reader refuses what a comparison cannot trust (a key
-    // missing: the message names it); the comparison reads the words as written.
-    results::checkedRunRecord(results, path);
-  } catch (const std::invalid_argument& e) {
+    return results::readResultsFile(path);
+  } catch (const results::ResultsFileError& e) {
     throw InputError(std::string("run compare: ") + e.what());
   }
-  return results;
 }
 
 }  // namespace
@@ -38,13 +29,13 @@ reports::Json readResults(const std::string& path) {
 int runRunCompareCommand(const std::string& oldFile, const std::string& newFile, const std::string& outDir,
                          std::ostream& out, std::ostream& err) {
   return guardCommand(err, [&] {
-    const reports::Json oldResults = readResults(oldFile);
-    const reports::Json newResults = readResults(newFile);
-    const reports::RunComparison comparison = reports::compareRuns(oldResults, newResults);
+    const results::RunRecord oldRun = readRun(oldFile);
+    const results::RunRecord newRun = readRun(newFile);
+    const reports::RunComparison comparison = reports::compareRuns(oldRun, newRun);
     reports::printRunComparison(comparison, oldFile, newFile, out);
     if (!outDir.empty()) {
       makeOutputDirectory(outDir);
-      const auto page = reports::writeRunComparisonHtml(comparison, oldResults, newResults, oldFile, newFile, outDir);
+      const auto page = reports::writeRunComparisonHtml(comparison, oldRun, newRun, oldFile, newFile, outDir);
       out << "run compare: page in " << page.string() << "\n";
     }
     return comparison.regressions.empty() ? kExitSuccess : kExitConformanceFailure;

@@ -16,7 +16,6 @@ using lighting::Light;
 using lighting::LightType;
 using lighting::Vec3;
 
-std::string_view budgetCutName(BudgetCut cut) { return cut == BudgetCut::Frame ? "frame" : "object"; }
 
 bool lightReaches(const Light& light, lighting::Profile profile, const Vec3& point, const Vec3& normal) {
   const Vec3 colour = light.finalColor();

@@ -20,7 +20,6 @@ enum class BudgetCut {
   Frame,   // SPEC 5.1: cut from the frame's kept set (4 directional, 64 others, 16 legacy)
   Object,  // SPEC 5.2: kept by the frame, not in the object's list (its 8)
 };
-std::string_view budgetCutName(BudgetCut cut);  // "frame", "object"
 
 struct LightBudgetOfLight {
   int light = 0;                    // index in the scene's lights

@@ -1,6 +1,6 @@
 #include "reports/bench_data.h"
 
-#include "reports/result_fields.h"
+#include "reports/json_fields.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "reports/bench_data.h"
-#include "reports/result_fields.h"
+#include "reports/json_fields.h"
 #include "reports/two_term_limit.h"
 
 #include <cstddef>

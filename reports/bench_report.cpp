@@ -10,6 +10,7 @@
 #include "reports/html_escape.h"
 #include "reports/html_page.h"
 #include "reports/html_sections.h"
+#include "reports/json_fields.h"
 #include "reports/result_fields.h"
 
 #include <algorithm>

@@ -31,64 +31,58 @@ std::string commentText(const std::string& text) {
 }
 
 // Why the test failed, in one line: its message, else its failing pixels.
-std::string reasonOf(const Json& test, std::string_view verdict) {
-  std::string reason = commentText(textField(test, "message"));
-  const Json& metrics = objectField(test, "metrics");
-  if (reason.empty() && !metrics.empty())
-    reason = formatField(metrics, "failing_pixels") + " failing of " + formatField(metrics, "compared_pixels") +
-             " compared pixels, max error " + formatMetric(metrics, "max_abs_error");
-  if (reason.empty()) reason = std::string(verdict) + " with no message";
+std::string reasonOf(const results::TestRecord& test) {
+  std::string reason = commentText(test.message);
+  if (reason.empty() && test.metrics)
+    reason = std::to_string(test.metrics->failingPixels) + " failing of " + std::to_string(test.metrics->comparedPixels) +
+             " compared pixels, max error " + formatMeasured(test.metrics->maxAbsError);
+  if (reason.empty()) reason = test.verdictWord() + " with no message";
   return reason;
 }
 
 }  // namespace
 
-std::string resultsCsv(const Json& results) {
-  checkResultsFormat(results);
+std::string resultsCsv(const results::RunRecord& run) {
   std::string text;
-  for (const Json& test : arrayField(results, "tests")) {
-    const std::string verdict = textField(test, "verdict");
-    const double seconds = numberField(objectField(test, "timings_ms"), "total").value_or(0) / 1000.0;
-    text += csvField(textField(test, "name")) + "," + csvField(verdict.empty() ? "unknown" : verdict) + "," +
+  for (const results::TestRecord& test : run.tests) {
+    const double seconds = test.timingsMs ? test.timingsMs->total / 1000.0 : 0;
+    text += csvField(test.name) + "," + csvField(test.verdictWord()) + "," +
             formatSeconds(seconds) + "\n";
   }
   return text;
 }
 
-std::string failuresCsv(const Json& results) {
-  checkResultsFormat(results);
-  std::string text = "# failures.csv of the lightcts run started " + textField(results, "started_utc") +
-                     " (lightcts " + textField(results, "lightcts_revision") + ")\n" +
+std::string failuresCsv(const results::RunRecord& run) {
+  std::string text = "# failures.csv of the lightcts run started " + run.startedUtc + " (lightcts " +
+                     run.lightctsRevision + ")\n" +
                      "# The run failures as expected failures: `lightcts run --expected-failures` reads this file\n" +
                      "# as it is. Copy it to seed a driver's list; replace each reason after '#' with the cause.\n";
   using comparison::Verdict;
-  for (const Json& test : arrayField(results, "tests")) {
-    const std::string name = textField(test, "name");
-    const std::string verdictName = textField(test, "verdict");
-    const std::optional<Verdict> verdict = comparison::parseVerdict(verdictName);
-    if (verdict && !comparison::isRunFailure(*verdict)) continue;
-    const std::string entry = name + "," + verdictName;
-    if (!verdict) {  // results.json is not trusted: an unknown word is shown, never listed
+  for (const results::TestRecord& test : run.tests) {
+    if (!comparison::isRunFailure(test.verdict)) continue;
+    const std::string verdictName = test.verdictWord();
+    const std::string entry = test.name + "," + verdictName;
+    if (!test.unknownVerdict.empty()) {  // results.json is not trusted: an unknown word is shown, never listed
       text += "# " + commentText(entry) + ": unknown verdict, not listed\n";
-    } else if (*verdict == Verdict::UnexpectedPass) {
+    } else if (test.verdict == Verdict::UnexpectedPass) {
       text += "# " + commentText(entry) + ": passes now; remove its line from the expected-failures file (it was listed: " +
-              commentText(textField(test, "expected_reason")) + ")\n";
-    } else if (!comparison::isExpectable(*verdict)) {  // NotRun: the run was interrupted before it
-      text += "# " + commentText(entry) + ": " + reasonOf(test, verdictName) +
+              commentText(test.expectedReason) + ")\n";
+    } else if (!comparison::isExpectable(test.verdict)) {  // NotRun: the run was interrupted before it
+      text += "# " + commentText(entry) + ": " + reasonOf(test) +
               "; not listed, an expected-failures line cannot name " + verdictName + "\n";
-    } else if (name.empty() || name.find_first_of(",#\r\n") != std::string::npos) {
+    } else if (test.name.empty() || test.name.find_first_of(",#\r\n") != std::string::npos) {
       text += "# " + commentText(entry) +
               ": cannot be listed, an expected-failures file cannot hold a name with ',' or '#'\n";
     } else {
-      text += entry + "  # " + reasonOf(test, verdictName) + "\n";
+      text += entry + "  # " + reasonOf(test) + "\n";
     }
   }
   return text;
 }
 
-void writeRunCsvs(const Json& results, const std::filesystem::path& dir) {
-  imaging::writeFileAtomically(dir / "results.csv", resultsCsv(results));
-  imaging::writeFileAtomically(dir / "failures.csv", failuresCsv(results));
+void writeRunCsvs(const results::RunRecord& run, const std::filesystem::path& dir) {
+  imaging::writeFileAtomically(dir / "results.csv", resultsCsv(run));
+  imaging::writeFileAtomically(dir / "failures.csv", failuresCsv(run));
 }
 
 }  // namespace reports

@@ -1,5 +1,5 @@
 // results.csv and failures.csv of a run (docs/results-format.md): the two
-// lists Mesa's deqp-runner writes beside its results, made from results.json.
+// lists Mesa's deqp-runner writes beside its results, made from the run's records.
 //
 // results.csv   every test, one `test,Verdict,seconds` line each, in
 //               results.json's order (deqp-runner's results.csv: name, status,
@@ -17,21 +17,20 @@
 // statuses are not verdicts, and no expected-failures file lists them.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "results/run_records.h"
 
 #include <filesystem>
 #include <string>
 
 namespace reports {
 
-// The text of results.csv. Throws std::invalid_argument when `results` is
-// not a results object.
-std::string resultsCsv(const nlohmann::ordered_json& results);
+// The text of results.csv.
+std::string resultsCsv(const results::RunRecord& run);
 
 // The text of failures.csv: a header of comment lines, then the failures.
-std::string failuresCsv(const nlohmann::ordered_json& results);
+std::string failuresCsv(const results::RunRecord& run);
 
 // Both files in `dir` (results.csv, failures.csv), each written atomically.
-void writeRunCsvs(const nlohmann::ordered_json& results, const std::filesystem::path& dir);
+void writeRunCsvs(const results::RunRecord& run, const std::filesystem::path& dir);
 
 }  // namespace reports

@@ -12,50 +12,50 @@
 namespace reports::html {
 namespace {
 
+// A count as the tables show it.
+std::string count(long long n) { return std::to_string(n); }
+
 // A scene's verdicts, "vulkan Pass, gl-egl Pass, ...", from the tests table.
 std::string verdictsOf(const Page& page, const std::string& scene) {
   std::string text;
-  for (const Json& test : arrayField(page.results, "tests")) {
-    if (textField(test, "group") + "." + textField(test, "scene") != scene) continue;
+  for (const results::TestRecord& test : page.run.tests) {
+    if (test.group + "." + test.scene != scene) continue;
     if (!text.empty()) text += " ";
-    text += escapeText(textField(test, "backend")) + " " + verdictBadge(textField(test, "verdict"));
+    text += escapeText(test.backend) + " " + verdictBadge(test.verdictWord());
   }
   return text.empty() ? "no test of this scene ran" : text;
 }
 
-void sceneWithCuts(std::ostream& out, const Page& page, const std::string& scene, const Json& budget) {
+void sceneWithCuts(std::ostream& out, const Page& page, const results::SceneBudgetRecord& budget) {
+  const std::string& scene = budget.scene;
   out << "<h3 id=\"budget-" << escapeText(scene) << "\">" << escapeText(scene) << "</h3>\n<p>" << verdictsOf(page, scene)
       << "</p>\n";
-  const Json& frames = arrayField(budget, "frames");
   out << "<table>\n<tr><th>frame</th><th>pixels cut</th><th>largest loss</th><th>summed loss</th>"
          "<th>largest relative loss</th><th>popping score</th></tr>\n";
-  for (const Json& frame : frames) {
-    out << "<tr>" << numberCell(formatField(frame, "frame")) << numberCell(formatField(frame, "pixels_cut"))
-        << numberCell(formatField(frame, "largest_loss")) << numberCell(formatField(frame, "summed_loss"))
-        << numberCell(formatField(frame, "largest_relative_loss")) << numberCell(formatField(frame, "popping_score"))
+  for (const results::BudgetFrameRecord& frame : budget.frames) {
+    out << "<tr>" << numberCell(count(frame.frame)) << numberCell(count(frame.pixelsCut))
+        << numberCell(formatOptional(frame.largestLoss)) << numberCell(formatOptional(frame.summedLoss))
+        << numberCell(formatOptional(frame.largestRelativeLoss)) << numberCell(formatOptional(frame.poppingScore))
         << "</tr>\n";
   }
   out << "</table>\n";
-  const Json& images = objectField(budget, "images");
-  const std::string mapsFrame = formatField(budget, "maps_frame");
+  const std::string mapsFrame = count(budget.mapsFrame);
   out << "<div>\n";
-  for (const auto& [key, label] : std::vector<std::pair<std::string, std::string>>{
-           {"reach", "reach (frame " + mapsFrame + ")"},
-           {"kept", "kept (frame " + mapsFrame + ")"},
-           {"loss", "loss (frame " + mapsFrame + ")"},
-           {"kept_strip", "kept, every frame"}})
-    if (images.contains(key)) figure(out, page, textField(images, key), label);
+  for (const auto& [image, label] : std::vector<std::pair<const std::string*, std::string>>{
+           {&budget.reachImage, "reach (frame " + mapsFrame + ")"},
+           {&budget.keptImage, "kept (frame " + mapsFrame + ")"},
+           {&budget.lossImage, "loss (frame " + mapsFrame + ")"},
+           {&budget.keptStripImage, "kept, every frame"}})
+    if (!image->empty()) figure(out, page, *image, label);
   out << "</div>\n";
-  const Json& lights = arrayField(budget, "lights_not_kept");
-  if (lights.empty()) return;
+  if (budget.lightsNotKept.empty()) return;
   out << "<table>\n<tr><th>light (frame " << escapeText(mapsFrame)
       << ")</th><th>reaches</th><th>kept</th><th>not kept</th><th>cut by the frame (SPEC 5.1)</th>"
          "<th>left out of the object's list (SPEC 5.2)</th></tr>\n";
-  for (const Json& light : lights) {
-    const Json& because = objectField(light, "not_kept_because");
-    out << "<tr>" << cell(textField(light, "name")) << numberCell(formatField(light, "reach_pixels"))
-        << numberCell(formatField(light, "kept_pixels")) << numberCell(formatField(light, "not_kept_pixels"))
-        << numberCell(formatField(because, "frame")) << numberCell(formatField(because, "object")) << "</tr>\n";
+  for (const results::BudgetLightRecord& light : budget.lightsNotKept) {
+    out << "<tr>" << cell(light.name) << numberCell(count(light.reachPixels)) << numberCell(count(light.keptPixels))
+        << numberCell(count(light.notKeptPixels)) << numberCell(count(light.cutByFrame))
+        << numberCell(count(light.cutByObject)) << "</tr>\n";
   }
   out << "</table>\n";
 }
@@ -63,9 +63,8 @@ void sceneWithCuts(std::ostream& out, const Page& page, const std::string& scene
 }  // namespace
 
 void budgetSections(std::ostream& out, const Page& page) {
-  const Json& budgets = objectField(page.results, "budgets");
   out << "<h2 id=\"budgets\">Light budgets</h2>\n";
-  if (budgets.empty()) {
+  if (page.run.budgets.empty()) {
     out << "<p>No light budgets in this run (<code>--no-budgets</code>, or a run of mutants only).</p>\n";
     return;
   }
@@ -74,14 +73,13 @@ void budgetSections(std::ostream& out, const Page& page) {
          "model evaluates there, <em>loss</em> is luminance(ideal - model). Maps of the frame that cuts at the most "
          "pixels; <code>lightcts budget --scene S --all-frames</code> writes every frame's.</p>\n";
   std::vector<std::string> uncut;
-  for (const auto& [scene, budget] : budgets.items()) {
-    if (budget.contains("error")) {
-      out << "<p>" << escapeText(scene) << ": budgets not computed: " << escapeText(textField(budget, "error"))
-          << "</p>\n";
-    } else if (budget.value("cuts", false)) {
-      sceneWithCuts(out, page, scene, budget);
+  for (const results::SceneBudgetRecord& budget : page.run.budgets) {
+    if (!budget.error.empty()) {
+      out << "<p>" << escapeText(budget.scene) << ": budgets not computed: " << escapeText(budget.error) << "</p>\n";
+    } else if (budget.cuts) {
+      sceneWithCuts(out, page, budget);
     } else {
-      uncut.push_back(scene);
+      uncut.push_back(budget.scene);
     }
   }
   if (uncut.empty()) return;

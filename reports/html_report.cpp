@@ -16,7 +16,7 @@ constexpr const char* kReportStyle = R"(table.summary { font-size: .9em; }
 .v { padding: 0 4px; border-radius: 3px; font-weight: bold; white-space: nowrap; }
 .v-Pass, .v-killed { background: #d4f4d4; } .v-ExpectedFail, .v-NotSupported { background: #e8e8e8; }
 .v-QualityWarning { background: #fff0b3; }
-.v-Fail, .v-Crash, .v-Timeout, .v-UnexpectedPass, .v-survived, .v-unknown { background: #f8c8c8; }
+.v-Fail, .v-Crash, .v-Timeout, .v-UnexpectedPass, .v-NotRun, .v-survived, .v-unknown { background: #f8c8c8; }
 .zero { color: #bbb; } .bad { background: #fbe3e3; }
 figure { display: inline-block; margin: 0 1em 1em 0; vertical-align: top; }
 figure img { width: 256px; image-rendering: pixelated; border: 1px solid #999; background: #000; }
@@ -37,12 +37,11 @@ fs::path defaultRunDir(const fs::path& outDir) {
 
 }  // namespace
 
-std::string htmlReport(const Json& results, const fs::path& runDir, const fs::path& reportDir) {
-  checkResultsFormat(results);
-  const html::Page page{results, runDir, reportDir};
+std::string htmlReport(const results::RunRecord& run, const fs::path& runDir, const fs::path& reportDir) {
+  const html::Page page{run, runDir, reportDir};
   std::ostringstream out;
   std::string title = "lightcts report ";  // appended: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string&&
-  title.append(textField(results, "lightcts_revision")).append(" ").append(textField(results, "started_utc"));
+  title.append(run.lightctsRevision).append(" ").append(run.startedUtc);
   html::pageStart(out, title, kReportStyle);
   html::header(out, page);
   html::backendSummary(out, page);
@@ -57,9 +56,9 @@ std::string htmlReport(const Json& results, const fs::path& runDir, const fs::pa
   return out.str();
 }
 
-void writeHtmlReport(const Json& results, const fs::path& outDir, const fs::path& runDir) {
-  const fs::path run = runDir.empty() ? defaultRunDir(outDir) : runDir;
-  imaging::writeFileAtomically(outDir / "index.html", htmlReport(results, run, outDir));
+void writeHtmlReport(const results::RunRecord& run, const fs::path& outDir, const fs::path& runDir) {
+  const fs::path runFolder = runDir.empty() ? defaultRunDir(outDir) : runDir;
+  imaging::writeFileAtomically(outDir / "index.html", htmlReport(run, runFolder, outDir));
 }
 
 }  // namespace reports

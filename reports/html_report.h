@@ -1,9 +1,9 @@
-// The HTML report of a run (the results.json of `lightcts run`): one page,
+// The HTML report of a run (its records, results/run_records.h): one page,
 // plain HTML with a small inline style sheet, no JavaScript and nothing
 // external except the run's own PNG images, linked by relative paths.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "results/run_records.h"
 
 #include <filesystem>
 #include <string>
@@ -20,16 +20,15 @@ namespace reports {
 // message; a table of every test; per-frame popping tables of animated
 // scenes; the slowest tests.
 //
-// Image paths in `results` are relative to `runDir` (the run's --out folder);
-// the page links them relative to `reportDir`, where it will live.
-// Throws std::invalid_argument when `results` is not a results object.
-std::string htmlReport(const nlohmann::ordered_json& results, const std::filesystem::path& runDir,
+// Image paths in the records are relative to `runDir` (the run's --out
+// folder); the page links them relative to `reportDir`, where it will live.
+std::string htmlReport(const results::RunRecord& run, const std::filesystem::path& runDir,
                        const std::filesystem::path& reportDir);
 
 // Writes outDir/index.html atomically (temporary file, then rename),
 // creating outDir. The run folder is `runDir`, by default outDir's parent
 // (`lightcts run --out OUT` writes OUT/report/index.html).
-void writeHtmlReport(const nlohmann::ordered_json& results, const std::filesystem::path& outDir,
+void writeHtmlReport(const results::RunRecord& run, const std::filesystem::path& outDir,
                      const std::filesystem::path& runDir = {});
 
 }  // namespace reports

@@ -4,6 +4,9 @@
 #include "reports/html_escape.h"
 #include "reports/result_fields.h"
 
+#include <algorithm>
+#include <array>
+
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -35,24 +38,21 @@ std::string lineOf(const std::string& text) {
   return line;
 }
 
-std::string metricsLine(const Json& metrics) {
-  if (metrics.empty()) return "";
-  std::string text = formatField(metrics, "failing_pixels") + " failing of " + formatField(metrics, "compared_pixels") +
+std::string metricsLine(const std::optional<results::Metrics>& metrics) {
+  if (!metrics) return "";
+  std::string text = std::to_string(metrics->failingPixels) + " failing of " + std::to_string(metrics->comparedPixels) +
                      " compared pixels";
-  if (numberField(metrics, "max_failing_pixels").value_or(0) > 0)
-    text += " (" + formatField(metrics, "max_failing_pixels") + " allowed)";
-  text += ", max error " + formatMetric(metrics, "max_abs_error") + ", tightness " + formatMetric(metrics, "tightness");
-  if (numberField(metrics, "non_finite_pixels").value_or(0) > 0)
-    text += ", " + formatField(metrics, "non_finite_pixels") + " non-finite";
+  if (metrics->maxFailingPixels > 0) text += " (" + std::to_string(metrics->maxFailingPixels) + " allowed)";
+  text += ", max error " + formatMeasured(metrics->maxAbsError) + ", tightness " + formatMeasured(metrics->tightness);
+  if (metrics->nonFinitePixels > 0) text += ", " + std::to_string(metrics->nonFinitePixels) + " non-finite";
   return text;
 }
 
-// Null in a result means NaN or infinity (results.json has neither).
-std::string triple(const Json& pixel, std::string_view key) {
-  const Json& values = arrayField(pixel, key);
+// A channel that is none was not finite (results.json has no NaN or infinity).
+std::string triple(const std::array<results::Measured, 3>& values) {
   std::string text = "(";
   for (std::size_t c = 0; c < values.size(); ++c)
-    text += (c ? ", " : "") + (values[c].is_null() ? "non-finite" : formatValue(values[c], 9));
+    text += (c ? ", " : "") + (values[c] ? formatNumber(*values[c], 9) : std::string("non-finite"));
   return text + ")";
 }
 
@@ -60,83 +60,85 @@ std::string triple(const Json& pixel, std::string_view key) {
 // --evidence-url's template with {test} replaced (a CI artifact's URL, as
 // deqp-runner's `junit --template`). A failure past --evidence-limit has no
 // images and no page: its numbers (summary.json) stand in. "" when none.
-std::string evidencePage(const Json& test, const std::string& urlTemplate) {
-  const Json& evidence = objectField(test, "evidence");
-  const std::string viewer = textField(evidence, "viewer");
-  if (viewer.empty()) return textField(evidence, "summary_json");
-  if (urlTemplate.empty()) return viewer;
+std::string evidencePage(const results::TestRecord& test, const std::string& urlTemplate) {
+  if (!test.evidence) return "";
+  if (test.evidence->viewer.empty()) return test.evidence->summaryJson;
+  if (urlTemplate.empty()) return test.evidence->viewer;
   std::string url = urlTemplate;
-  const std::string name = textField(test, "name");
-  for (std::size_t at = url.find("{test}"); at != std::string::npos; at = url.find("{test}", at + name.size()))
-    url.replace(at, 6, name);
+  for (std::size_t at = url.find("{test}"); at != std::string::npos; at = url.find("{test}", at + test.name.size()))
+    url.replace(at, 6, test.name);
   return url;
 }
 
 // Everything a person needs from a CI page without opening the HTML report.
-std::string testDetails(const Json& test, const std::string& page) {
+std::string testDetails(const results::TestRecord& test, const std::string& page) {
   std::ostringstream out;
   if (!page.empty()) out << "evidence: " << page << '\n';
-  const Json& metrics = objectField(test, "metrics");
-  if (!textField(test, "description").empty()) out << textField(test, "description") << '\n';
-  out << "scene file: " << textField(test, "scene_file") << '\n';
-  out << "verdict: " << textField(test, "verdict") << " (raw: " << textField(test, "raw_verdict") << ")\n";
-  if (!textField(test, "expected_reason").empty()) out << "expected failure: " << textField(test, "expected_reason") << '\n';
-  if (!textField(test, "message").empty()) out << "message: " << textField(test, "message") << '\n';
-  if (!metrics.empty()) out << metricsLine(metrics) << '\n';
-  for (const Json& pixel : arrayField(metrics, "worst"))
-    out << "  (" << formatField(pixel, "x") << ", " << formatField(pixel, "y") << ") result " << triple(pixel, "result")
-        << " reference " << triple(pixel, "reference") << " tolerance " << triple(pixel, "tolerance") << '\n';
-  for (const Json& frame : arrayField(test, "frames"))
-    if (comparison::parseVerdict(textField(frame, "verdict")) != comparison::Verdict::Pass)
-      out << "frame " << formatField(frame, "frame") << ": " << textField(frame, "verdict") << ", "
-          << formatField(frame, "failing_pixels") << " failing, max error " << formatField(frame, "max_abs_error") << '\n';
-  const Json& evidence = objectField(test, "evidence");
-  for (const char* key : {"result_png", "reference_png", "error_mask_png", "summary_json"})
-    if (!textField(evidence, key).empty()) out << key << ": " << textField(evidence, key) << '\n';
+  if (!test.description.empty()) out << test.description << '\n';
+  out << "scene file: " << test.sceneFile << '\n';
+  out << "verdict: " << test.verdictWord() << " (raw: " << comparison::verdictName(test.rawVerdict) << ")\n";
+  if (!test.expectedReason.empty()) out << "expected failure: " << test.expectedReason << '\n';
+  if (!test.message.empty()) out << "message: " << test.message << '\n';
+  if (test.metrics) {
+    out << metricsLine(test.metrics) << '\n';
+    for (const results::WorstPixel& pixel : test.metrics->worst)
+      out << "  (" << pixel.x << ", " << pixel.y << ") result " << triple(pixel.result) << " reference "
+          << triple(pixel.reference) << " tolerance " << triple(pixel.tolerance) << '\n';
+  }
+  if (test.frames)
+    for (const results::FrameRecord& frame : *test.frames)
+      if (frame.verdict != comparison::Verdict::Pass)
+        out << "frame " << frame.frame << ": " << comparison::verdictName(frame.verdict) << ", " << frame.failingPixels
+            << " failing, max error " << formatOptional(frame.maxAbsError) << '\n';
+  if (test.evidence)
+    for (const auto& [key, value] : {std::pair{"result_png", &test.evidence->resultPng},
+                                     std::pair{"reference_png", &test.evidence->referencePng},
+                                     std::pair{"error_mask_png", &test.evidence->errorMaskPng},
+                                     std::pair{"summary_json", &test.evidence->summaryJson}})
+      if (!value->empty()) out << key << ": " << *value << '\n';
   return out.str();
 }
 
-Case testCase(const Json& test, const std::string& evidenceUrl) {
+Case testCase(const results::TestRecord& test, const std::string& evidenceUrl) {
   Case c;
   const std::string page = evidencePage(test, evidenceUrl);
-  const auto testDetails = [&](const Json& t) { return reports::testDetails(t, page); };
-  const std::string verdict = textField(test, "verdict");
-  const std::string group = textField(test, "group");
-  c.classname = junitClassname(textField(test, "backend"), group);
-  c.name = textField(test, "name");
-  if (c.name.empty()) c.name = group + "." + textField(test, "scene") + "." + textField(test, "backend");
-  c.seconds = numberField(objectField(test, "timings_ms"), "total").value_or(0) / 1000.0;
-  c.outcome = outcomeOf(verdict);
-  c.type = verdict.empty() ? "unknown" : verdict;
-  const std::string message = lineOf(textField(test, "message"));
-  const std::string metrics = metricsLine(objectField(test, "metrics"));
-  const std::string reason = textField(test, "expected_reason");
+  const auto details = [&] { return testDetails(test, page); };
+  c.classname = junitClassname(test.backend, test.group);
+  c.name = test.name;
+  if (c.name.empty()) c.name = test.group + "." + test.scene + "." + test.backend;
+  c.seconds = test.timingsMs ? test.timingsMs->total / 1000.0 : 0;
+  const bool known = test.unknownVerdict.empty();
+  // An unknown word is reported like a Fail: a report never turns what it
+  // does not know into a pass.
+  c.outcome = known ? comparison::ciOutcome(test.verdict) : Outcome::Failure;
+  c.type = test.verdictWord();
+  const std::string message = lineOf(test.message);
+  const std::string metrics = metricsLine(test.metrics);
+  const std::string& reason = test.expectedReason;
   using comparison::Verdict;
-  // An unknown verdict is reported like a Fail (outcomeOf made it a Failure).
-  switch (comparison::parseVerdict(verdict).value_or(Verdict::Fail)) {
+  switch (known ? test.verdict : Verdict::Fail) {
     case Verdict::ExpectedFail:
       c.message = "ExpectedFail: " + (reason.empty() ? std::string("listed as an expected failure") : reason);
-      c.output = testDetails(test);
+      c.output = details();
       break;
     case Verdict::UnexpectedPass:
       c.message = "UnexpectedPass: listed as an expected failure (" + reason + ") but passed; remove it from the list";
-      c.details = testDetails(test);
+      c.details = details();
       break;
     case Verdict::NotSupported: c.message = "NotSupported" + (message.empty() ? "" : ": " + message); break;
     case Verdict::Pass: break;
     case Verdict::QualityWarning:  // skipped: the comparison checked nothing (SPEC 7)
       c.message = "QualityWarning: " + (message.empty() ? metrics : message);
-      c.output = testDetails(test);
+      c.output = details();
       break;
     case Verdict::Flake:  // a pass, with the failure before the retry shown beside it
-      c.output = "Flake: failed, then passed on a retry" + (message.empty() ? "" : ": " + message) + "\n" +
-                 testDetails(test);
+      c.output = "Flake: failed, then passed on a retry" + (message.empty() ? "" : ": " + message) + "\n" + details();
       break;
     case Verdict::Fail:
     case Verdict::Crash:
     case Verdict::Timeout:
       c.message = c.type + ": " + (message.empty() ? metrics : message);
-      c.details = testDetails(test);
+      c.details = details();
       break;
     case Verdict::NotRun: c.message = "NotRun: " + message; break;  // the run was interrupted first
   }
@@ -146,35 +148,29 @@ Case testCase(const Json& test, const std::string& evidenceUrl) {
   return c;
 }
 
-Case mutantCase(const Json& mutant, const std::string& check) {
+Case mutantCase(const results::MutantRecord& mutant, const std::string& check) {
   Case c;
-  const std::string status = textField(mutant, "status");
-  const std::string name = textField(mutant, "mutant");
-  c.classname = junitClassname(textField(mutant, "backend"), "mutants");
-  c.name = "mutants." + name + "." + textField(mutant, "backend");
-  c.type = status.empty() ? "unknown" : status;
-  const std::string killers = joinedField(mutant, "killed_by");
-  const std::string what = textField(mutant, "what");
-  c.outcome = mutantOutcome(status);
+  const std::string status(comparison::mutantStatusName(mutant.status));
+  c.classname = junitClassname(mutant.backend, "mutants");
+  c.name = "mutants." + mutant.mutant + "." + mutant.backend;
+  c.type = status;
+  c.outcome = comparison::ciOutcome(mutant.status);
+  const std::string killers = joined(mutant.killedBy);
   using comparison::MutantStatus;
-  const std::optional<MutantStatus> known = comparison::parseMutantStatus(status);
-  if (!known) {
-    c.message = "unknown mutant status \"" + status + "\"";
-    return c;
-  }
-  switch (*known) {
-    case MutantStatus::Killed: c.output = what + "\nkilled by: " + killers + "\n"; break;
+  switch (mutant.status) {
+    case MutantStatus::Killed: c.output = mutant.what + "\nkilled by: " + killers + "\n"; break;
     case MutantStatus::NotSupported: c.message = "NotSupported"; break;
     case MutantStatus::Crash:
     case MutantStatus::Timeout:
     case MutantStatus::NotRun:
-      c.message = status + ": the mutant's run did not finish; it proves nothing (" + what + ")";
+      c.message = status + ": the mutant's run did not finish; it proves nothing (" + mutant.what + ")";
       break;
     case MutantStatus::Survived:
       if (check == "killers") {
-        c.message = "survived: its killers (" + joinedField(mutant, "killers") + ") did not catch this wrong variant of the model (" + what + ")";
+        c.message = "survived: its killers (" + joined(mutant.killers) +
+                    ") did not catch this wrong variant of the model (" + mutant.what + ")";
       } else {
-        c.message = "survived: no scene caught this wrong variant of the model (" + what + ")";
+        c.message = "survived: no scene caught this wrong variant of the model (" + mutant.what + ")";
       }
       break;
   }
@@ -222,45 +218,43 @@ void writeCase(std::ostringstream& out, const Case& c) {
   out << "    </testcase>\n";
 }
 
-std::vector<Suite> suites(const Json& results) {
+std::vector<Suite> suites(const results::RunRecord& run) {
   std::vector<Suite> list;
-  const std::string evidenceUrl = textField(results, "evidence_url");
-  for (const std::string& backendName : backendOrder(results)) {
+  for (const std::string& backendName : backendOrder(run)) {
     Suite suite;
     suite.name = backendName;
-    for (const Json& backend : arrayField(results, "backends")) {
-      if (textField(backend, "backend") != backendName) continue;
-      const Json& device = objectField(backend, "device");
-      for (const char* key : {"name", "driver", "driver_version", "api_version"})
-        suite.properties.emplace_back(std::string("device.") + key, textField(device, key));
-      for (const char* key : {"api_backend", "driver_option", "status", "message", "expected_failures_file"})
-        suite.properties.emplace_back(key, textField(backend, key));
-      suite.seconds = numberField(backend, "wall_s");
-      for (const Json& test : arrayField(results, "tests"))
-        if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test, evidenceUrl));
-      const std::string status = textField(backend, "status");
-      const bool ran = comparison::parseBackendStatus(status) == comparison::BackendStatus::Ran;
-      if (suite.cases.empty() && !ran) {
-        Case c;
-        c.classname = junitClassname(backendName, "backend");
-        c.name = "backend." + backendName;
-        c.type = status.empty() ? "unknown" : status;
-        c.outcome = backendOutcome(status);
-        c.message = c.type + (textField(backend, "message").empty() ? "" : ": " + textField(backend, "message"));
-        suite.cases.push_back(c);
-      }
-      break;
+    const auto backend = std::find_if(run.backends.begin(), run.backends.end(),
+                                      [&](const results::BackendRecord& b) { return b.backend == backendName; });
+    if (backend != run.backends.end()) {
+      const results::DeviceRecord device = backend->device.value_or(results::DeviceRecord{});
+      for (const auto& [key, value] : {std::pair{"name", &device.name}, std::pair{"driver", &device.driver},
+                                       std::pair{"driver_version", &device.driverVersion},
+                                       std::pair{"api_version", &device.apiVersion}})
+        suite.properties.emplace_back(std::string("device.") + key, *value);
+      suite.properties.emplace_back("api_backend", backend->apiBackend);
+      suite.properties.emplace_back("driver_option", backend->driverOption);
+      suite.properties.emplace_back("status", std::string(comparison::backendStatusName(backend->status)));
+      suite.properties.emplace_back("message", backend->message);
+      suite.properties.emplace_back("expected_failures_file", backend->expectedFailuresFile);
+      suite.seconds = backend->wallSeconds;
     }
-    if (suite.properties.empty())  // a backend that only tests name
-      for (const Json& test : arrayField(results, "tests"))
-        if (textField(test, "backend") == backendName) suite.cases.push_back(testCase(test, evidenceUrl));
+    for (const results::TestRecord& test : run.tests)
+      if (test.backend == backendName) suite.cases.push_back(testCase(test, run.evidenceUrl));
+    if (backend != run.backends.end() && suite.cases.empty() && backend->status != comparison::BackendStatus::Ran) {
+      Case c;
+      c.classname = junitClassname(backendName, "backend");
+      c.name = "backend." + backendName;
+      c.type = std::string(comparison::backendStatusName(backend->status));
+      c.outcome = comparison::ciOutcome(backend->status);
+      c.message = c.type + (backend->message.empty() ? "" : ": " + backend->message);
+      suite.cases.push_back(c);
+    }
     if (!suite.cases.empty() || !suite.properties.empty()) list.push_back(std::move(suite));
   }
-  if (!arrayField(results, "mutants").empty()) {
+  if (!run.mutants.empty()) {
     Suite mutants;
     mutants.name = "mutants";
-    for (const Json& mutant : arrayField(results, "mutants"))
-      mutants.cases.push_back(mutantCase(mutant, textField(results, "mutant_check")));
+    for (const results::MutantRecord& mutant : run.mutants) mutants.cases.push_back(mutantCase(mutant, run.mutantCheck));
     list.push_back(std::move(mutants));
   }
   return list;
@@ -274,26 +268,23 @@ std::string junitClassname(std::string_view backend, std::string_view group) {
   return std::string(backend) + "." + std::string(group);
 }
 
-std::string junitXml(const Json& results) {
-  checkResultsFormat(results);
-  const std::vector<Suite> list = suites(results);
+std::string junitXml(const results::RunRecord& run) {
+  const std::vector<Suite> list = suites(run);
   Suite all;
   all.name = "lightcts";
-  all.seconds = numberField(results, "duration_s");
+  all.seconds = run.durationSeconds;
   for (const Suite& suite : list) all.cases.insert(all.cases.end(), suite.cases.begin(), suite.cases.end());
 
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" << openTag("testsuites", all);
-  const std::string timestamp = textField(results, "started_utc");
-  const std::string hostname = textField(objectField(results, "machine"), "hostname");
   for (const Suite& suite : list) {
     std::string extra;
-    if (!timestamp.empty()) extra += " timestamp=\"" + escapeXmlAttribute(timestamp) + "\"";
-    if (!hostname.empty()) extra += " hostname=\"" + escapeXmlAttribute(hostname) + "\"";
+    if (!run.startedUtc.empty()) extra += " timestamp=\"" + escapeXmlAttribute(run.startedUtc) + "\"";
+    if (!run.machine.hostname.empty()) extra += " hostname=\"" + escapeXmlAttribute(run.machine.hostname) + "\"";
     out << "  " << openTag("testsuite", suite, extra);
     out << "    <properties>\n";
-    out << "      <property name=\"lightcts_revision\" value=\""
-        << escapeXmlAttribute(textField(results, "lightcts_revision")) << "\"/>\n";
+    out << "      <property name=\"lightcts_revision\" value=\"" << escapeXmlAttribute(run.lightctsRevision)
+        << "\"/>\n";
     for (const auto& [name, value] : suite.properties)
       out << "      <property name=\"" << escapeXmlAttribute(name) << "\" value=\"" << escapeXmlAttribute(value)
           << "\"/>\n";
@@ -305,8 +296,8 @@ std::string junitXml(const Json& results) {
   return out.str();
 }
 
-void writeJunit(const Json& results, const std::filesystem::path& file) {
-  imaging::writeFileAtomically(file, junitXml(results));
+void writeJunit(const results::RunRecord& run, const std::filesystem::path& file) {
+  imaging::writeFileAtomically(file, junitXml(run));
 }
 
 }  // namespace reports

@@ -1,7 +1,7 @@
-// JUnit XML of a run (the results.json of `lightcts run`), for CI tools.
+// JUnit XML of a run (its records, results/run_records.h), for CI tools.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "results/run_records.h"
 
 #include <filesystem>
 #include <string>
@@ -14,7 +14,7 @@ namespace reports {
 // time="SECONDS"> per test, and a "mutants" <testsuite> (classname
 // "BACKEND.mutants"; killed passes, survived fails):
 //   Fail, UnexpectedPass, unknown verdicts   <failure message type>
-//   Crash, Timeout                           <error message type>
+//   Crash, Timeout, NotRun                   <error message type>
 //   NotSupported                             <skipped message>
 //   ExpectedFail                             <skipped message="ExpectedFail: reason">
 //                                            (pytest's xfail convention: a known
@@ -33,8 +33,7 @@ namespace reports {
 // (skipped or error).
 // The XML validates against the JUnit schema Jenkins uses (reports/tests/junit.xsd):
 // the counts of skips are on each <testsuite>, never on <testsuites>.
-// Throws std::invalid_argument when `results` is not a results object.
-std::string junitXml(const nlohmann::ordered_json& results);
+std::string junitXml(const results::RunRecord& run);
 
 // A testcase's classname, "BACKEND.GROUP" ("vulkan.attenuation"): Jenkins
 // splits it at its last dot into package and class, GitLab lists it beside
@@ -43,6 +42,6 @@ std::string junitXml(const nlohmann::ordered_json& results);
 std::string junitClassname(std::string_view backend, std::string_view group);
 
 // junitXml, written atomically (temporary file, then rename).
-void writeJunit(const nlohmann::ordered_json& results, const std::filesystem::path& file);
+void writeJunit(const results::RunRecord& run, const std::filesystem::path& file);
 
 }  // namespace reports

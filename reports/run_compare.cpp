@@ -26,19 +26,16 @@ struct TestIndex {
   std::unordered_map<std::string, TestView> byName;
 };
 
-TestIndex indexTests(const Json& results) {
+TestIndex indexTests(const results::RunRecord& run) {
   TestIndex index;
-  for (const Json& test : arrayField(results, "tests")) {
-    std::string name = textField(test, "name");
-    if (name.empty() || index.byName.contains(name)) continue;
-    TestView view{textField(test, "verdict"), std::nullopt};
-    const Json& metrics = objectField(test, "metrics");
-    const auto infinite = metrics.find("tightness_is_infinite");
-    const bool markedInfinite = infinite != metrics.end() && infinite->is_boolean() && infinite->get<bool>();
-    if (const auto t = numberField(metrics, "tightness"); t && !markedInfinite && std::isfinite(*t) && *t >= 0)
-      view.tightness = *t;
-    index.order.push_back(name);
-    index.byName.emplace(std::move(name), std::move(view));
+  for (const results::TestRecord& test : run.tests) {
+    if (test.name.empty() || index.byName.contains(test.name)) continue;
+    TestView view{test.verdictWord(), std::nullopt};
+    if (test.metrics && !test.metrics->tightnessIsInfinite && test.metrics->tightness &&
+        std::isfinite(*test.metrics->tightness) && *test.metrics->tightness >= 0)
+      view.tightness = *test.metrics->tightness;
+    index.order.push_back(test.name);
+    index.byName.emplace(test.name, std::move(view));
   }
   return index;
 }
@@ -130,12 +127,14 @@ void listTable(std::ostream& html, std::string_view id, std::string_view title, 
   html << "</table>\n";
 }
 
-void runMeta(std::ostream& html, std::string_view heading, std::string_view label, const Json& results,
+void runMeta(std::ostream& html, std::string_view heading, std::string_view label, const results::RunRecord& run,
              std::size_t tests) {
   html << "<h3>" << escapeText(heading) << "</h3>\n<dl class=\"meta\">\n";
   html << "<dt>file</dt><dd>" << escapeText(label) << "</dd>\n";
-  for (const char* key : {"started_utc", "lightcts_revision", "command"})
-    html << "<dt>" << key << "</dt><dd>" << escapeText(textField(results, key)) << "</dd>\n";
+  for (const auto& [key, value] : {std::pair{"started_utc", &run.startedUtc},
+                                   std::pair{"lightcts_revision", &run.lightctsRevision},
+                                   std::pair{"command", &run.command}})
+    html << "<dt>" << key << "</dt><dd>" << escapeText(*value) << "</dd>\n";
   html << "<dt>tests</dt><dd>" << tests << "</dd>\n</dl>\n";
 }
 
@@ -151,23 +150,9 @@ bool countsAsRunFailure(std::string_view verdict) {
   return !known || comparison::isRunFailure(*known);
 }
 
-void checkComparableResults(const Json& results, std::string_view what) {
-  const std::string name(what);
-  if (!results.is_object()) throw std::invalid_argument(name + ": not a JSON object");
-  const auto format = results.find("format");
-  if (format == results.end()) throw std::invalid_argument(name + ": no \"format\": not a lightcts results.json");
-  if (*format != "lightcts-results")
-    throw std::invalid_argument(name + ": format is " + format->dump() + ", not \"lightcts-results\"");
-  const auto tests = results.find("tests");
-  if (tests == results.end() || !tests->is_array())
-    throw std::invalid_argument(name + ": \"tests\" is not an array");
-}
-
-RunComparison compareRuns(const Json& oldResults, const Json& newResults) {
-  checkComparableResults(oldResults, "old results");
-  checkComparableResults(newResults, "new results");
-  const TestIndex before = indexTests(oldResults);
-  const TestIndex after = indexTests(newResults);
+RunComparison compareRuns(const results::RunRecord& oldRun, const results::RunRecord& newRun) {
+  const TestIndex before = indexTests(oldRun);
+  const TestIndex after = indexTests(newRun);
   RunComparison c;
   c.oldTests = before.order.size();
   c.newTests = after.order.size();
@@ -216,13 +201,13 @@ void printRunComparison(const RunComparison& c, std::string_view oldLabel, std::
     out << summaryLine(c) << "\n";
 }
 
-std::string runComparisonHtml(const RunComparison& c, const Json& oldResults, const Json& newResults,
-                              std::string_view oldLabel, std::string_view newLabel) {
+std::string runComparisonHtml(const RunComparison& c, const results::RunRecord& oldRun,
+                              const results::RunRecord& newRun, std::string_view oldLabel, std::string_view newLabel) {
   std::ostringstream html;
   html::pageStart(html, "lightcts run comparison", kPageStyle);
   html << "<h1>lightcts run comparison</h1>\n";
-  runMeta(html, "old run", oldLabel, oldResults, c.oldTests);
-  runMeta(html, "new run", newLabel, newResults, c.newTests);
+  runMeta(html, "old run", oldLabel, oldRun, c.oldTests);
+  runMeta(html, "new run", newLabel, newRun, c.newTests);
   html << "<h2>Summary</h2>\n";
   if (c.unchanged()) html << "<p><strong>no change</strong></p>\n";
   html << "<table>\n<tr><th>kind</th><th>tests</th></tr>\n";
@@ -257,12 +242,12 @@ std::string runComparisonHtml(const RunComparison& c, const Json& oldResults, co
   return html.str();
 }
 
-std::filesystem::path writeRunComparisonHtml(const RunComparison& c, const Json& oldResults, const Json& newResults,
-                                             std::string_view oldLabel, std::string_view newLabel,
-                                             const std::filesystem::path& outDir) {
+std::filesystem::path writeRunComparisonHtml(const RunComparison& c, const results::RunRecord& oldRun,
+                                             const results::RunRecord& newRun, std::string_view oldLabel,
+                                             std::string_view newLabel, const std::filesystem::path& outDir) {
   std::filesystem::create_directories(outDir);
   const auto file = outDir / "index.html";
-  imaging::writeFileAtomically(file, runComparisonHtml(c, oldResults, newResults, oldLabel, newLabel));
+  imaging::writeFileAtomically(file, runComparisonHtml(c, oldRun, newRun, oldLabel, newLabel));
   return file;
 }
 

@@ -1,8 +1,7 @@
 // Comparing two runs (`lightcts run compare OLD NEW`): what changed
 // from one results.json to the other, per test name, as piglit's summary
-// comparison shows it. Both files are read through result_fields.h (missing or
-// mistyped fields read as empty, never throw) and every verdict through
-// comparison/verdict.h, so a word it does not know counts as a run failure.
+// comparison shows it. Both runs are records (results/results_file.h reads
+// the files), and a verdict word no verdict has counts as a run failure.
 #pragma once
 
 #include "reports/result_fields.h"
@@ -50,15 +49,10 @@ struct RunComparison {
 // (a missing verdict included).
 bool countsAsRunFailure(std::string_view verdict);
 
-// Throws std::invalid_argument unless `results` is an object whose "format" is
-// "lightcts-results" and whose "tests" is an array.
-void checkComparableResults(const Json& results, std::string_view what);
-
-// Tests are matched by "name"; an entry without a name is ignored, and of two
+// Tests are matched by name; a test without a name is ignored, and of two
 // with one name the first counts. Lists follow the new run's order of tests
-// (removed ones the old run's). Throws std::invalid_argument as
-// checkComparableResults does.
-RunComparison compareRuns(const Json& oldResults, const Json& newResults);
+// (removed ones the old run's).
+RunComparison compareRuns(const results::RunRecord& oldRun, const results::RunRecord& newRun);
 
 // The printout: one line per regression, fix, other change, new test, removed
 // test and tightness change, then a summary line; "no change" when unchanged.
@@ -67,11 +61,11 @@ void printRunComparison(const RunComparison& comparison, std::string_view oldLab
 
 // A self-contained HTML page (html_page.h's frame): both runs' metadata, a
 // table of counts and one table per kind of change.
-std::string runComparisonHtml(const RunComparison& comparison, const Json& oldResults, const Json& newResults,
-                              std::string_view oldLabel, std::string_view newLabel);
+std::string runComparisonHtml(const RunComparison& comparison, const results::RunRecord& oldRun,
+                              const results::RunRecord& newRun, std::string_view oldLabel, std::string_view newLabel);
 // Writes outDir/index.html atomically, creating outDir; returns the file.
-std::filesystem::path writeRunComparisonHtml(const RunComparison& comparison, const Json& oldResults,
-                                             const Json& newResults, std::string_view oldLabel,
+std::filesystem::path writeRunComparisonHtml(const RunComparison& comparison, const results::RunRecord& oldRun,
+                                             const results::RunRecord& newRun, std::string_view oldLabel,
                                              std::string_view newLabel, const std::filesystem::path& outDir);
 
 }  // namespace reports

@@ -1,41 +1,23 @@
 #include "results/run_records.h"
 
+#include "results/json_fields.h"
+
 #include <algorithm>
 #include <stdexcept>
 
 namespace results {
 namespace {
 
+using namespace fields;
 using comparison::Verdict;
 
-// Reading: a key that is missing or of another type reads as its default,
-// so a record of a run that broke half way still reads.
-std::string text(const Json& json, const char* key) {
-  const auto it = json.find(key);
-  return it != json.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
-double number(const Json& json, const char* key) {
-  const auto it = json.find(key);
-  return it != json.end() && it->is_number() ? it->get<double>() : 0.0;
-}
-
-Json carried(const Json& json, const char* key, Json absent = nullptr) {
-  const auto it = json.find(key);
-  return it != json.end() ? *it : absent;
-}
-
-std::vector<std::string> texts(const Json& json, const char* key) {
-  std::vector<std::string> items;
-  const auto it = json.find(key);
-  if (it == json.end() || !it->is_array()) return items;
-  for (const Json& item : *it)
-    if (item.is_string()) items.push_back(item.get<std::string>());
-  return items;
-}
-
-Verdict verdictAt(const Json& json, const char* key) {
-  return comparison::parseVerdict(text(json, key)).value_or(Verdict::Crash);
+// A verdict word no verdict has (a newer lightcts's, or a hand edit) reads as
+// a Crash, a failure and never a pass, and the record says which word it was.
+Verdict verdictAt(const Json& json, const char* key, std::string* unknownWord = nullptr) {
+  const std::string word = text(json, key);
+  const std::optional<Verdict> verdict = comparison::parseVerdict(word);
+  if (!verdict && unknownWord) *unknownWord = word;
+  return verdict.value_or(Verdict::Crash);
 }
 
 const Json& objectAt(const Json& array, std::size_t i, const char* what) {
@@ -59,23 +41,14 @@ Json arrayOf(const std::vector<Record>& records) {
   return array;
 }
 
-// The outcome's keys after "message", in results.json's order.
-constexpr std::pair<Json TaskOutcome::*, const char*> kOutcomeValues[] = {
-    {&TaskOutcome::metrics, "metrics"}, {&TaskOutcome::frames, "frames"}, {&TaskOutcome::poppingScore, "popping_score"}};
-constexpr const char* kTimingsKey = "timings_ms";
-
-void writeOutcome(const TaskOutcome& outcome, Json& json) {
-  json["message"] = outcome.message;
-  for (const auto& [field, key] : kOutcomeValues) json[key] = outcome.*field;
-  json[kTimingsKey] = outcome.timingsMs ? outcome.timingsMs->toJson() : Json(nullptr);
-  json["evidence"] = outcome.evidence;
+std::optional<long long> optionalInteger(const Json& json, const char* key) {
+  const auto it = json.find(key);
+  return it != json.end() && it->is_number() ? std::optional<long long>(it->get<long long>()) : std::nullopt;
 }
 
-void readOutcome(const Json& json, TaskOutcome& outcome) {
-  outcome.message = text(json, "message");
-  for (const auto& [field, key] : kOutcomeValues) outcome.*field = carried(json, key);
-  outcome.timingsMs = StageTimes::fromJson(carried(json, kTimingsKey));
-  outcome.evidence = carried(json, "evidence");
+template <typename T>
+Json optionalJson(const std::optional<T>& value) {
+  return value ? Json(*value) : Json(nullptr);
 }
 
 // A test's words before its verdicts, in results.json's order.
@@ -85,19 +58,6 @@ constexpr std::pair<std::string TestRecord::*, const char*> kTestWords[] = {
     {&TestRecord::description, "description"}, {&TestRecord::backend, "backend"}};
 
 }  // namespace
-
-Json StageTimes::toJson() const {
-  Json json = Json::object();
-  for (const auto& [field, key] : kFields) json[key] = this->*field;
-  return json;
-}
-
-std::optional<StageTimes> StageTimes::fromJson(const Json& json) {
-  if (!json.is_object()) return std::nullopt;
-  StageTimes times;
-  for (const auto& [field, key] : kFields) times.*field = number(json, key);
-  return times;
-}
 
 Json TaskResult::toJson() const {
   Json json = {{"test", test}, {"raw_verdict", comparison::verdictName(rawVerdict)}};
@@ -133,7 +93,7 @@ Json TestRecord::toJson() const {
   Json record = Json::object();
   for (const auto& [field, key] : kTestWords) record[key] = this->*field;
   if (!admissible.empty()) record["admissible"] = admissible;
-  record["verdict"] = comparison::verdictName(verdict);
+  record["verdict"] = verdictWord();
   record["raw_verdict"] = comparison::verdictName(rawVerdict);
   record["expected_reason"] = expectedReason;
   writeOutcome(*this, record);
@@ -145,12 +105,17 @@ TestRecord TestRecord::fromJson(const Json& json) {
   TestRecord t;
   for (const auto& [field, key] : kTestWords) t.*field = text(json, key);
   t.admissible = text(json, "admissible");
-  t.verdict = verdictAt(json, "verdict");
+  t.verdict = verdictAt(json, "verdict", &t.unknownVerdict);
+  if (t.unknownVerdict.empty() && !comparison::parseVerdict(text(json, "verdict"))) t.unknownVerdict = "unknown";
   t.rawVerdict = verdictAt(json, "raw_verdict");
   t.expectedReason = text(json, "expected_reason");
   readOutcome(json, t);
   t.attempts = recordsAt<AttemptRecord>(json, "attempts");
   return t;
+}
+
+std::string TestRecord::verdictWord() const {
+  return unknownVerdict.empty() ? std::string(comparison::verdictName(verdict)) : unknownVerdict;
 }
 
 TaskTimes& TaskTimes::operator+=(const TaskTimes& other) {
@@ -195,13 +160,30 @@ std::map<Verdict, int> countsAt(const Json& json, const char* key) {
 
 }  // namespace
 
+Json DeviceRecord::toJson() const {
+  return {{"name", name},
+          {"driver", driver},
+          {"driver_version", driverVersion},
+          {"api_version", apiVersion},
+          {"selected_by", selectedBy},
+          {"sub_pixel_bits", subPixelBits},
+          {"sub_texel_bits", subTexelBits}};
+}
+
+DeviceRecord DeviceRecord::fromJson(const Json& json) {
+  return {text(json, "name"),          text(json, "driver"),
+          text(json, "driver_version"), text(json, "api_version"),
+          text(json, "selected_by"),    integer(json, "sub_pixel_bits"),
+          integer(json, "sub_texel_bits")};
+}
+
 Json BackendRecord::toJson() const {
   Json record = {{"backend", backend},
           {"api_backend", apiBackend},
           {"driver_option", driverOption},
           {"status", comparison::backendStatusName(status)},
           {"message", message},
-          {"device", device},
+          {"device", device ? device->toJson() : Json(nullptr)},
           {"expected_failures_file", expectedFailuresFile},
           {"counts", countsJson(counts, true)},
           {"mutant_counts",
@@ -220,18 +202,16 @@ BackendRecord BackendRecord::fromJson(const Json& json) {
   b.driverOption = text(json, "driver_option");
   b.status = comparison::parseBackendStatus(text(json, "status")).value_or(comparison::BackendStatus::Error);
   b.message = text(json, "message");
-  b.device = carried(json, "device");
+  if (const Json device = carried(json, "device"); device.is_object()) b.device = DeviceRecord::fromJson(device);
   b.expectedFailuresFile = text(json, "expected_failures_file");
   b.counts = countsAt(json, "counts");
   b.admissibleCounts = countsAt(json, "admissible_counts");
-  const Json mutantCounts = carried(json, "mutant_counts", Json::object());
-  if (mutantCounts.is_object())
-    b.mutantCounts = {int(number(mutantCounts, "killed")), int(number(mutantCounts, "survived")),
-                      int(number(mutantCounts, "other"))};
+  if (const Json mutantCounts = carried(json, "mutant_counts"); mutantCounts.is_object())
+    b.mutantCounts = {int(integer(mutantCounts, "killed")), int(integer(mutantCounts, "survived")),
+                      int(integer(mutantCounts, "other"))};
   b.wallSeconds = number(json, "wall_s");
-  const Json taskMs = carried(json, "task_ms", Json::object());
-  if (taskMs.is_object())
-    b.taskTimes = {(long long)number(taskMs, "tasks"), number(taskMs, "reference"), number(taskMs, "total")};
+  if (const Json taskMs = carried(json, "task_ms"); taskMs.is_object())
+    b.taskTimes = {integer(taskMs, "tasks"), number(taskMs, "reference"), number(taskMs, "total")};
   b.log = text(json, "log");
   return b;
 }
@@ -243,17 +223,20 @@ Json MutantRecord::toJson() const {
           {"status", comparison::mutantStatusName(status)},
           {"killers", killers},
           {"killed_by", killedBy},
-          {"evidence", evidence}};
+          {"evidence", evidence ? evidence->toJson() : Json(nullptr)}};
 }
 
 MutantRecord MutantRecord::fromJson(const Json& json) {
-  return {text(json, "mutant"),
-          text(json, "what"),
-          text(json, "backend"),
-          comparison::parseMutantStatus(text(json, "status")).value_or(comparison::MutantStatus::Crash),
-          texts(json, "killers"),
-          texts(json, "killed_by"),
-          carried(json, "evidence")};
+  MutantRecord m{text(json, "mutant"),
+                 text(json, "what"),
+                 text(json, "backend"),
+                 comparison::parseMutantStatus(text(json, "status")).value_or(comparison::MutantStatus::Crash),
+                 texts(json, "killers"),
+                 texts(json, "killed_by"),
+                 std::nullopt};
+  if (const Json evidence = carried(json, "evidence"); evidence.is_object())
+    m.evidence = EvidenceRecord::fromJson(evidence);
+  return m;
 }
 
 Json AdmissibleRecord::toJson() const {
@@ -268,20 +251,59 @@ AdmissibleRecord AdmissibleRecord::fromJson(const Json& json) {
           text(json, "grant"),
           text(json, "backend"),
           comparison::parseAdmissibleStatus(text(json, "status")).value_or(comparison::AdmissibleStatus::Incomplete),
-          int(number(json, "tests")),
+          int(integer(json, "tests")),
           texts(json, "failed"),
           texts(json, "expected")};
 }
 
-Json slowestTests(const std::vector<TestRecord>& tests) {
-  std::vector<std::pair<double, std::string>> times;
+Json MachineRecord::toJson() const { return {{"hostname", hostname}, {"cpu", cpu}, {"cores", cores}, {"os", os}}; }
+
+MachineRecord MachineRecord::fromJson(const Json& json) {
+  return {text(json, "hostname"), text(json, "cpu"), integer(json, "cores"), text(json, "os")};
+}
+
+Json SelectionRecord::toJson() const { return {{"include", include}, {"exclude", exclude}, {"caselists", caselists}}; }
+
+SelectionRecord SelectionRecord::fromJson(const Json& json) {
+  return {texts(json, "include"), texts(json, "exclude"), texts(json, "caselists")};
+}
+
+Json BaselineFile::toJson() const { return {{"kind", kind}, {"path", path}, {"sha256", sha256}}; }
+
+BaselineFile BaselineFile::fromJson(const Json& json) {
+  return {text(json, "kind"), text(json, "path"), text(json, "sha256")};
+}
+
+Json MutantNotChecked::toJson() const { return {{"mutant", mutant}, {"reason", reason}}; }
+
+MutantNotChecked MutantNotChecked::fromJson(const Json& json) { return {text(json, "mutant"), text(json, "reason")}; }
+
+Json ShardRecord::toJson() const {
+  return {{"index", index},
+          {"total", total},
+          {"partition", partition},
+          {"balanced_by", balancedBy},
+          {"timings_file", timingsFile},
+          {"tests_in_run", testsInRun},
+          {"units", units},
+          {"units_in_run", unitsInRun}};
+}
+
+ShardRecord ShardRecord::fromJson(const Json& json) {
+  return {integer(json, "index"),       integer(json, "total"),        text(json, "partition"),
+          text(json, "balanced_by"),    text(json, "timings_file"),    integer(json, "tests_in_run"),
+          integer(json, "units"),       integer(json, "units_in_run")};
+}
+
+std::vector<SlowTest> slowestTests(const std::vector<TestRecord>& tests) {
+  std::vector<SlowTest> times;
   for (const TestRecord& t : tests)
-    if (t.timingsMs) times.emplace_back(t.timingsMs->total, t.name);
-  std::sort(times.begin(), times.end(), std::greater<>());
+    if (t.timingsMs) times.push_back({t.name, t.timingsMs->total});
+  std::stable_sort(times.begin(), times.end(), [](const SlowTest& a, const SlowTest& b) {
+    return a.totalMs != b.totalMs ? a.totalMs > b.totalMs : a.name > b.name;
+  });
   if (times.size() > 10) times.resize(10);
-  Json slowest = Json::array();
-  for (const auto& [ms, name] : times) slowest.push_back({{"name", name}, {"total_ms", ms}});
-  return slowest;
+  return times;
 }
 
 Json RunRecord::toJson() const {
@@ -291,46 +313,42 @@ Json RunRecord::toJson() const {
               {"started_utc", startedUtc},
               {"duration_s", durationSeconds},
               {"command", command},
-              {"machine", machine},
+              {"machine", machine.toJson()},
               {"scenes_dir", scenesDir},
               {"scenes_digest", scenesDigest},
-              {"selection", selection},
-              {"baseline_files", baselineFiles},
+              {"selection", selection.toJson()},
+              {"baseline_files", arrayOf(baselineFiles)},
               {"mutants_run", mutantsRun},
               {"mutant_check", mutantCheck},
-              {"mutants_not_checked", mutantsNotChecked},
-              {"evidence_limit", evidenceLimit},
+              {"mutants_not_checked", arrayOf(mutantsNotChecked)},
+              {"evidence_limit", optionalJson(evidenceLimit)},
               {"evidence_url", evidenceUrl},
-              {"jobs", jobs},
-              {"shard", shard}};
+              {"jobs", optionalJson(jobs)},
+              {"shard", shard ? shard->toJson() : Json(nullptr)}};
   if (!mergedFrom.is_null()) run["merged_from"] = mergedFrom;
   run["reference_cache"] = referenceCache;
-  run["timeout_s"] = timeoutSeconds;
-  run["flake_retries"] = flakeRetries;
+  run["timeout_s"] = optionalJson(timeoutSeconds);
+  run["flake_retries"] = optionalJson(flakeRetries);
   run["flakes_fail"] = flakesFail;
   run["backends"] = arrayOf(backends);
   run["tests"] = arrayOf(tests);
   run["mutants"] = arrayOf(mutants);
   run["admissible"] = arrayOf(admissible);
-  run["budgets"] = budgets;
-  run["slowest"] = slowestTests(tests);
+  run["budgets"] = budgetsJson(budgets);
+  Json slowest = Json::array();
+  for (const SlowTest& s : slowestTests(tests)) slowest.push_back({{"name", s.name}, {"total_ms", s.totalMs}});
+  run["slowest"] = slowest;
   return run;
 }
 
 namespace {
 
-// What a run says of itself: its words and the values it carries through.
+// What a run says of itself in words.
 constexpr std::pair<std::string RunRecord::*, const char*> kRunWords[] = {
     {&RunRecord::lightctsRevision, "lightcts_revision"}, {&RunRecord::startedUtc, "started_utc"},
     {&RunRecord::command, "command"},                    {&RunRecord::scenesDir, "scenes_dir"},
     {&RunRecord::scenesDigest, "scenes_digest"},         {&RunRecord::mutantCheck, "mutant_check"},
-    {&RunRecord::evidenceUrl, "evidence_url"}};
-constexpr std::pair<Json RunRecord::*, const char*> kRunValues[] = {
-    {&RunRecord::machine, "machine"},          {&RunRecord::selection, "selection"},
-    {&RunRecord::evidenceLimit, "evidence_limit"}, {&RunRecord::jobs, "jobs"},
-    {&RunRecord::shard, "shard"},              {&RunRecord::mergedFrom, "merged_from"},
-    {&RunRecord::referenceCache, "reference_cache"}, {&RunRecord::timeoutSeconds, "timeout_s"},
-    {&RunRecord::flakeRetries, "flake_retries"}};
+    {&RunRecord::evidenceUrl, "evidence_url"},           {&RunRecord::referenceCache, "reference_cache"}};
 
 }  // namespace
 
@@ -339,18 +357,25 @@ RunRecord RunRecord::fromJson(const Json& json) {
     throw std::invalid_argument("not a lightcts results.json");
   RunRecord r;
   for (const auto& [field, key] : kRunWords) r.*field = text(json, key);
-  for (const auto& [field, key] : kRunValues) r.*field = carried(json, key);
   r.durationSeconds = number(json, "duration_s");
-  r.baselineFiles = carried(json, "baseline_files", Json::array());
+  if (const Json machine = carried(json, "machine"); machine.is_object()) r.machine = MachineRecord::fromJson(machine);
+  if (const Json selection = carried(json, "selection"); selection.is_object())
+    r.selection = SelectionRecord::fromJson(selection);
+  r.baselineFiles = objects<BaselineFile>(json, "baseline_files", BaselineFile::fromJson);
   r.mutantsRun = texts(json, "mutants_run");
-  r.mutantsNotChecked = carried(json, "mutants_not_checked", Json::array());
-  const Json flakesFail = carried(json, "flakes_fail", false);
-  r.flakesFail = flakesFail.is_boolean() && flakesFail.get<bool>();
+  r.mutantsNotChecked = objects<MutantNotChecked>(json, "mutants_not_checked", MutantNotChecked::fromJson);
+  r.evidenceLimit = optionalInteger(json, "evidence_limit");
+  r.jobs = optionalInteger(json, "jobs");
+  if (const Json shard = carried(json, "shard"); shard.is_object()) r.shard = ShardRecord::fromJson(shard);
+  r.mergedFrom = carried(json, "merged_from");
+  r.timeoutSeconds = measured(json, "timeout_s");
+  r.flakeRetries = optionalInteger(json, "flake_retries");
+  r.flakesFail = boolean(json, "flakes_fail");
   r.backends = recordsAt<BackendRecord>(json, "backends");
   r.tests = recordsAt<TestRecord>(json, "tests");
   r.mutants = recordsAt<MutantRecord>(json, "mutants");
   r.admissible = recordsAt<AdmissibleRecord>(json, "admissible");
-  r.budgets = carried(json, "budgets", Json::object());
+  r.budgets = budgetsFromJson(carried(json, "budgets", Json::object()));
   return r;
 }
 

@@ -3,63 +3,25 @@
 // them, each with one reader and one writer. `lightcts run` assembles them
 // from its workers' results; `lightcts merge` reads them back from each
 // shard and joins them; both write through the same writers, so a merged
-// run has the keys of one run in the same order. What a record only carries
-// through (a test's metrics, frames and evidence, a device's description,
-// the machine) stays JSON: the worker and the comparison own its shape.
+// run has the keys of one run in the same order; the reports read them.
+// What nothing reads (a merge's list of its shards) is carried as JSON.
 #pragma once
 
 #include "comparison/run_status.h"
 #include "comparison/verdict.h"
+#include "results/budget_records.h"
+#include "results/outcome_records.h"
 
 #include <nlohmann/json.hpp>
 
-#include <array>
 #include <map>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace results {
 
 using Json = nlohmann::ordered_json;
-
-// Where a task's time went, in milliseconds (results.json "timings_ms"): the
-// worker's stages, then their total.
-struct StageTimes {
-  double reference = 0;
-  double pipeline = 0;
-  double draw = 0;
-  double readback = 0;
-  double compare = 0;
-  double total = 0;
-
-  // Every field with its key, in results.json's order: the one spelling of
-  // the stage names, which the writer, the reader and the reports' table use.
-  static constexpr std::array<std::pair<double StageTimes::*, const char*>, 6> kFields = {{
-      {&StageTimes::reference, "reference"},
-      {&StageTimes::pipeline, "pipeline"},
-      {&StageTimes::draw, "draw"},
-      {&StageTimes::readback, "readback"},
-      {&StageTimes::compare, "compare"},
-      {&StageTimes::total, "total"},
-  }};
-  Json toJson() const;
-  // null (a task that never reported times) or anything but an object:
-  // nullopt; a stage that is missing or no number reads as 0.
-  static std::optional<StageTimes> fromJson(const Json& json);
-};
-
-// What a task's comparison came to, as a worker reports it and as a test's
-// record keeps it.
-struct TaskOutcome {
-  std::string message;
-  Json metrics = nullptr;
-  Json frames = nullptr;
-  Json poppingScore = nullptr;
-  std::optional<StageTimes> timingsMs;  // none for a Crash, Timeout, NotSupported or NotRun
-  Json evidence = nullptr;
-};
 
 // The worker protocol's "result" event (runner/suite_worker.h) without its
 // kind and index: what one task of a worker plan came to.
@@ -100,10 +62,15 @@ struct TestRecord : TaskOutcome {
   // model's own test (and not written).
   std::string admissible;
   comparison::Verdict verdict = comparison::Verdict::Crash;     // after expected failures and retries
+  // The word results.json had for "verdict" where it is no verdict (a newer
+  // lightcts's, or a hand edit): `verdict` is then Crash, a failure to every
+  // rule, and the reports show this word; "" otherwise.
+  std::string unknownVerdict;
   comparison::Verdict rawVerdict = comparison::Verdict::Crash;  // what the shown attempt said
   std::string expectedReason;  // the expected-failures line's reason, "" when not listed
   std::vector<AttemptRecord> attempts;  // a retried test's every attempt; empty (and not written) otherwise
 
+  std::string verdictWord() const;  // unknownVerdict, else the verdict's name
   Json toJson() const;
   static TestRecord fromJson(const Json& json);
 };
@@ -127,13 +94,28 @@ struct TaskTimes {
 };
 TaskTimes taskTimesOf(const std::vector<TaskResult>& results);
 
+// What a worker said of its device: the precision it reports, which its
+// tolerances use (docs/tolerances.md).
+struct DeviceRecord {
+  std::string name;
+  std::string driver;
+  std::string driverVersion;
+  std::string apiVersion;
+  std::string selectedBy;
+  long long subPixelBits = 0;
+  long long subTexelBits = 0;
+
+  Json toJson() const;
+  static DeviceRecord fromJson(const Json& json);
+};
+
 struct BackendRecord {
   std::string backend;  // the combination's suffix
   std::string apiBackend;
   std::string driverOption;
   comparison::BackendStatus status = comparison::BackendStatus::Error;
   std::string message;
-  Json device = nullptr;  // what the worker said of its device, or null
+  std::optional<DeviceRecord> device;  // none when no worker got its backend up
   std::string expectedFailuresFile;
   std::map<comparison::Verdict, int> counts;  // the model's tests: in report order, zeros only where listedWhenZero
   MutantCounts mutantCounts;
@@ -154,7 +136,7 @@ struct MutantRecord {
   comparison::MutantStatus status = comparison::MutantStatus::Crash;
   std::vector<std::string> killers;   // the scenes meant to catch it
   std::vector<std::string> killedBy;  // the scenes that did, <group>.<name>
-  Json evidence = nullptr;            // its first kill's, with "test"
+  std::optional<EvidenceRecord> evidence;  // its first kill's, with the test
 
   Json toJson() const;
   static MutantRecord fromJson(const Json& json);
@@ -176,6 +158,61 @@ struct AdmissibleRecord {
   static AdmissibleRecord fromJson(const Json& json);
 };
 
+// The machine a run (or shard) ran on.
+struct MachineRecord {
+  std::string hostname;
+  std::string cpu;
+  long long cores = 0;
+  std::string os;
+
+  Json toJson() const;
+  static MachineRecord fromJson(const Json& json);
+};
+
+// --include, --exclude and --caselist as given (empty: every test).
+struct SelectionRecord {
+  std::vector<std::string> include;
+  std::vector<std::string> exclude;
+  std::vector<std::string> caselists;
+
+  Json toJson() const;
+  static SelectionRecord fromJson(const Json& json);
+};
+
+// A file that chose or judged the tests, with a digest of its bytes.
+struct BaselineFile {
+  std::string kind;  // "expected-failures" | "caselist"
+  std::string path;
+  std::string sha256;
+
+  Json toJson() const;
+  static BaselineFile fromJson(const Json& json);
+};
+
+// A mutant the run did not check, and why.
+struct MutantNotChecked {
+  std::string mutant;
+  std::string reason;
+
+  Json toJson() const;
+  static MutantNotChecked fromJson(const Json& json);
+};
+
+// `run --shard I/N`: which shard of which partition.
+struct ShardRecord {
+  long long index = 0;  // from 1
+  long long total = 0;
+  std::string partition;   // a digest of the units and each one's shard
+  std::string balancedBy;  // "test count" | "timings"
+  std::string timingsFile;
+  long long testsInRun = 0;
+  long long units = 0;
+  long long unitsInRun = 0;
+
+  Json toJson() const;
+  static ShardRecord fromJson(const Json& json);
+};
+
 // The whole of results.json. `shard` is null for a whole run (merged or
 // not) and the shard's description in a shard; `mergedFrom` is written only
 // by `merge`. "slowest" is not stored: the writer derives it from the tests.
@@ -184,37 +221,42 @@ struct RunRecord {
   std::string startedUtc;
   double durationSeconds = 0;
   std::string command;
-  Json machine = nullptr;
+  MachineRecord machine;
   std::string scenesDir;
   std::string scenesDigest;
-  Json selection = nullptr;
-  Json baselineFiles = Json::array();
+  SelectionRecord selection;
+  std::vector<BaselineFile> baselineFiles;
   std::vector<std::string> mutantsRun;
   std::string mutantCheck;  // "killers" | "all-scenes"
-  Json mutantsNotChecked = Json::array();
-  Json evidenceLimit = nullptr;  // an integer, or null where a shard did not say
+  std::vector<MutantNotChecked> mutantsNotChecked;
+  std::optional<long long> evidenceLimit;  // none where a shard did not say
   std::string evidenceUrl;
-  Json jobs = nullptr;
-  Json shard = nullptr;
+  std::optional<long long> jobs;
+  std::optional<ShardRecord> shard;  // none for a whole run
   Json mergedFrom = nullptr;  // merge only: each shard's folder, shard, duration and machine
-  Json referenceCache = nullptr;  // "fresh" or the cache folder
-  Json timeoutSeconds = nullptr;
-  Json flakeRetries = nullptr;
+  std::string referenceCache;  // "fresh" or the cache folder
+  std::optional<double> timeoutSeconds;
+  std::optional<long long> flakeRetries;
   bool flakesFail = false;
   std::vector<BackendRecord> backends;
   std::vector<TestRecord> tests;
   std::vector<MutantRecord> mutants;
   std::vector<AdmissibleRecord> admissible;
-  Json budgets = Json::object();
+  std::vector<SceneBudgetRecord> budgets;
 
-  bool isShard() const { return shard.is_object(); }
+  bool isShard() const { return shard.has_value(); }
   Json toJson() const;
   // Throws std::invalid_argument when `json` is not a lightcts results.json
   // or a record in it is not an object.
   static RunRecord fromJson(const Json& json);
 };
 
-// The ten slowest tests by timings_ms.total, for results.json's "slowest".
-Json slowestTests(const std::vector<TestRecord>& tests);
+// The ten slowest tests by timings_ms.total, slowest first: results.json's
+// "slowest", the run's summary and the report's table.
+struct SlowTest {
+  std::string name;
+  double totalMs = 0;
+};
+std::vector<SlowTest> slowestTests(const std::vector<TestRecord>& tests);
 
 }  // namespace results

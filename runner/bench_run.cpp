@@ -341,7 +341,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
                 {"duration_s", std::chrono::duration<double>(Clock::now() - started).count()},
                 {"command", options.commandLine},
                 {"quick", options.quick},  // a smoke test, not a measurement
-                {"machine", machineJson()},
+                {"machine", thisMachine().toJson()},
                 {"peak", peak},
                 {"peak_after", peakAfter},
                 {"peak_drift", drift},

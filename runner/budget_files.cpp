@@ -13,28 +13,20 @@ using Json = nlohmann::ordered_json;
 // The strip's maps are at most this wide: every frame of a path side by side.
 constexpr int kStripMapWidth = 96;
 
-Json budgetFrameJson(const lighting::Frame& frame, const reference::LightBudget& budget,
-                     std::optional<double> poppingScore) {
-  Json lights = Json::array();
-  for (const reference::LightBudgetOfLight& l : budget.lights) {
-    lights.push_back({{"light", l.light},
-                      {"name", frame.scene().lights[std::size_t(l.light)].name},
-                      {"reach_pixels", l.reachPixels},
-                      {"kept_pixels", l.keptPixels},
-                      {"vertex_pixels", l.vertexPixels},
-                      {"not_kept_pixels", l.reachPixels - l.keptPixels},
-                      {"not_kept_because",
-                       {{std::string(reference::budgetCutName(reference::BudgetCut::Frame)), l.frameCutPixels},
-                        {std::string(reference::budgetCutName(reference::BudgetCut::Object)), l.objectCutPixels}}}});
-  }
-  const auto finite = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
-  return {{"frame", frame.index},
-          {"pixels_cut", budget.pixelsCut},
-          {"largest_loss", finite(budget.largestLoss)},
-          {"summed_loss", finite(budget.summedLoss)},
-          {"largest_relative_loss", finite(budget.largestRelativeLoss)},
-          {"popping_score", poppingScore ? finite(*poppingScore) : Json(nullptr)},
-          {"lights", lights}};
+results::BudgetFrameRecord budgetFrameRecord(const lighting::Frame& frame, const reference::LightBudget& budget,
+                                             std::optional<double> poppingScore) {
+  const auto finite = [](double v) { return std::isfinite(v) ? results::Measured(v) : std::nullopt; };
+  results::BudgetFrameRecord record{frame.index,
+                                    budget.pixelsCut,
+                                    finite(budget.largestLoss),
+                                    finite(budget.summedLoss),
+                                    finite(budget.largestRelativeLoss),
+                                    poppingScore ? finite(*poppingScore) : std::nullopt,
+                                    std::vector<results::BudgetLightRecord>{}};
+  for (const reference::LightBudgetOfLight& l : budget.lights)
+    record.lights->push_back({l.light, frame.scene().lights[std::size_t(l.light)].name, l.reachPixels, l.keptPixels,
+                              l.vertexPixels, l.reachPixels - l.keptPixels, l.frameCutPixels, l.objectCutPixels});
+  return record;
 }
 
 double budgetPoppingScore(const imaging::Image& previousLoss, const imaging::Image& loss) {

@@ -6,6 +6,7 @@
 #include "lighting/frame.h"
 #include "reference/light_budget.h"
 #include "reports/budget_maps.h"
+#include "results/budget_records.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,9 +15,10 @@
 
 namespace runner {
 
-// budget.json's entry for one frame (docs/cli.md, `lightcts budget`).
-nlohmann::ordered_json budgetFrameJson(const lighting::Frame& frame, const reference::LightBudget& budget,
-                                       std::optional<double> poppingScore);
+// One frame's budgets with every light: budget.json's entry (docs/cli.md,
+// `lightcts budget`) and, without its lights, a run's.
+results::BudgetFrameRecord budgetFrameRecord(const lighting::Frame& frame, const reference::LightBudget& budget,
+                                             std::optional<double> poppingScore);
 
 // SPEC 6's popping score of the model itself: the largest change, over pixels
 // and channels, of its error against the ideal from one frame to the next.

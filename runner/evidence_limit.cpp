@@ -10,14 +10,14 @@ long long limitEvidenceImages(std::vector<results::TestRecord>& tests, const std
   namespace fs = std::filesystem;
   std::vector<results::TestRecord*> failures, others;
   for (results::TestRecord& test : tests) {
-    if (!test.evidence.is_object()) continue;
+    if (!test.evidence) continue;
     (comparison::isRunFailure(test.verdict) ? failures : others).push_back(&test);
   }
   failures.insert(failures.end(), others.begin(), others.end());
   long long dropped = 0;
   for (std::size_t i = std::size_t(limit); i < failures.size(); ++i) {
-    nlohmann::ordered_json& evidence = failures[i]->evidence;
-    const std::string summary = evidence.value("summary_json", "");
+    results::EvidenceRecord& evidence = *failures[i]->evidence;
+    const std::string summary = evidence.summaryJson;
     const fs::path folder = (outDir / summary).lexically_normal().parent_path();
     // Only ever a test's own folder, evidence/<test>/, whatever the record says.
     const bool ownFolder = !summary.empty() && folder.parent_path() == (outDir / "evidence").lexically_normal();
@@ -27,7 +27,7 @@ long long limitEvidenceImages(std::vector<results::TestRecord>& tests, const std
       for (const fs::directory_entry& entry : fs::directory_iterator(folder, ignored))
         if (entry.path().filename() != "summary.json") images.push_back(entry.path());
     for (const fs::path& image : images) fs::remove_all(image, ignored);
-    evidence = {{"frame", evidence.value("frame", 0)}, {"summary_json", summary}, {"images_kept", false}};
+    evidence.imagesKept = false;
     ++dropped;
   }
   return dropped;

@@ -133,7 +133,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
       if (!event.is_object()) continue;
       const std::string kind = event.value(protocol::kKind, "");
       if (kind == protocol::kDevice) {
-        outcome.device = event.value(protocol::kDeviceField, Json());
+        outcome.device = results::DeviceRecord::fromJson(event.value(protocol::kDeviceField, Json::object()));
         backendUp = true;
         if (callbacks.backendUp) callbacks.backendUp();
       } else if (kind == protocol::kBackendError && next < plan.tasks.size() && !plan.tasks[next].isModelTest()) {
@@ -154,7 +154,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         break;
       } else if (kind == protocol::kBackendUnavailable || kind == protocol::kBackendError) {
         // A backend that ran before and is gone now is an error, not a skip.
-        const bool skip = kind == protocol::kBackendUnavailable && outcome.device.is_null();
+        const bool skip = kind == protocol::kBackendUnavailable && !outcome.device;
         outcome.status = skip ? BackendStatus::NotSupported : BackendStatus::Error;
         outcome.message = event.value(protocol::kMessage, "");
         const Verdict verdict = skip ? Verdict::NotSupported : Verdict::Crash;

@@ -24,7 +24,7 @@ namespace runner {
 struct PartOutcome {
   comparison::BackendStatus status = comparison::BackendStatus::Ran;
   std::string message;
-  nlohmann::ordered_json device = nullptr;    // what the worker said of its device, or null
+  std::optional<results::DeviceRecord> device;  // what the worker said of its device
   std::vector<results::TaskResult> results;  // one per task, in plan order
   double wallSeconds = 0;
 };

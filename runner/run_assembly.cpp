@@ -60,9 +60,9 @@ results::MutantRecord mutantRecord(shaders::Mutant mutant, const std::string& su
     const auto clean = cleanVerdicts.find(r->test);
     if (r->rawVerdict == Verdict::Fail && (clean == cleanVerdicts.end() || results::passed(clean->second))) {
       record.killedBy.push_back(r->test.substr(0, r->test.rfind('.')));
-      if (record.evidence.is_null() && !r->evidence.is_null()) {
+      if (!record.evidence && r->evidence) {
         record.evidence = r->evidence;
-        record.evidence["test"] = r->test;
+        record.evidence->test = r->test;
       }
     }
     seen.crashed = seen.crashed || r->rawVerdict == Verdict::Crash;

@@ -6,7 +6,7 @@
 // results.json's `budgets`; one that cuts nothing gets a one-line entry.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "results/budget_records.h"
 
 #include <filesystem>
 #include <string>
@@ -21,6 +21,7 @@ struct BudgetScene {
 
 // results.json's `budgets`: {"<group>.<name>": {...}} (docs/results-format.md).
 // Image paths are relative to `outDir`.
-nlohmann::ordered_json runBudgets(const std::vector<BudgetScene>& scenes, const std::filesystem::path& outDir);
+std::vector<results::SceneBudgetRecord> runBudgets(const std::vector<BudgetScene>& scenes,
+                                                   const std::filesystem::path& outDir);
 
 }  // namespace runner

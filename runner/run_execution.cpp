@@ -90,7 +90,7 @@ class Execution {
         PartOutcome& part = outcomes[p];
         ++partCount;
         statuses.push_back({part.status, part.message});
-        if (runs[c].device.is_null()) runs[c].device = part.device;
+        if (!runs[c].device) runs[c].device = part.device;
         runs[c].workerSeconds += part.wallSeconds;
         runs[c].tasks.insert(runs[c].tasks.end(), parts[p].tasks.begin(), parts[p].tasks.end());
         runs[c].taskTimes += results::taskTimesOf(part.results);

@@ -26,7 +26,7 @@ struct Attempt {
 // of the first part that has one), and every task's attempts, in part order.
 struct CombinationRun {
   results::StatusAndMessage status;
-  nlohmann::ordered_json device = nullptr;
+  std::optional<results::DeviceRecord> device;
   std::vector<WorkerTask> tasks;
   std::vector<std::vector<Attempt>> attempts;  // per task: the first, then each retry
   double workerSeconds = 0;    // the parts' and retries' worker time, summed (parts may overlap)

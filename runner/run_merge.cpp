@@ -41,11 +41,6 @@ std::string nameOf(const Shard& s) { return s.dir.string(); }
 
 std::string shardName(int index, int total) { return "shard " + std::to_string(index) + "/" + std::to_string(total); }
 
-int shardField(const RunRecord& run, const char* key) {
-  const auto it = run.shard.find(key);
-  return it != run.shard.end() && it->is_number_integer() ? it->get<int>() : 0;
-}
-
 Shard readShard(const fs::path& dir) {
   const fs::path file = dir / "results.json";
   if (!fs::exists(file))
@@ -58,8 +53,8 @@ Shard readShard(const fs::path& dir) {
   }
   if (!shard.run.isShard())
     throw MergeRefused(file.string() + ": not a shard (a run without --shard I/N); there is nothing to merge it with");
-  shard.index = shardField(shard.run, "index");
-  shard.total = shardField(shard.run, "total");
+  shard.index = int(shard.run.shard->index);
+  shard.total = int(shard.run.shard->total);
   return shard;
 }
 
@@ -79,9 +74,8 @@ void requireSameDrivers(const std::vector<Shard>& shards) {
   std::map<std::string, std::pair<Json, std::string>> seen;  // suffix -> (device, shard)
   for (const Shard& s : shards)
     for (const BackendRecord& b : s.run.backends) {
-      const Json& d = b.device;
-      if (!d.is_object()) continue;
-      const Json driver = {d.value("name", ""), d.value("driver", ""), d.value("driver_version", "")};
+      if (!b.device) continue;
+      const Json driver = {b.device->name, b.device->driver, b.device->driverVersion};
       const auto [it, inserted] = seen.emplace(b.backend, std::pair{driver, nameOf(s)});
       if (!inserted && it->second.first != driver)
         throw MergeRefused("different drivers on " + b.backend + ": " + it->second.first.dump() + " in " +
@@ -146,7 +140,7 @@ std::vector<TestRecord> mergeTests(const std::vector<Shard>& shards, const std::
       if (!inserted) throw MergeRefused("test " + t.name + " is in two shards: " + it->second + " and " + nameOf(s));
       tests.push_back(t);
     }
-  const std::size_t expected = std::size_t(std::max(shardField(shards.front().run, "tests_in_run"), 0));
+  const std::size_t expected = std::size_t(std::max(shards.front().run.shard->testsInRun, 0LL));
   if (tests.size() != expected)
     throw MergeRefused("the shards hold " + std::to_string(tests.size()) + " tests where the run has " +
                        std::to_string(expected));
@@ -160,12 +154,12 @@ BackendRecord mergeBackend(const std::vector<const BackendRecord*>& parts, const
                            const std::vector<MutantRecord>& mutants) {
   BackendRecord merged = *parts.front();
   std::vector<results::StatusAndMessage> statuses;
-  merged.device = nullptr;
+  merged.device = std::nullopt;
   merged.wallSeconds = 0;
   merged.taskTimes = {};
   for (const BackendRecord* b : parts) {
     statuses.push_back({b->status, b->message});
-    if (merged.device.is_null()) merged.device = b->device;
+    if (!merged.device) merged.device = b->device;
     merged.wallSeconds += b->wallSeconds;
     merged.taskTimes += b->taskTimes;
   }
@@ -192,14 +186,14 @@ MergedMutant mergeMutant(const std::vector<std::pair<const MutantRecord*, const 
   MergedMutant merged{*records.front().first, nullptr};
   MutantRecord& m = merged.record;
   m.killedBy.clear();
-  m.evidence = nullptr;
+  m.evidence = std::nullopt;
   std::size_t firstKill = SIZE_MAX;
   results::MutantObservations seen;
   seen.backendAbsent = true;  // absent only where every shard says so
   for (const auto& [r, shard] : records) {
     seen = results::joined(seen, results::observationsOf(r->status));
     m.killedBy.insert(m.killedBy.end(), r->killedBy.begin(), r->killedBy.end());
-    if (r->killedBy.empty() || r->evidence.is_null()) continue;
+    if (r->killedBy.empty() || !r->evidence) continue;
     const auto at = sceneOrder.find(r->killedBy.front());
     const std::size_t order = at == sceneOrder.end() ? SIZE_MAX - 1 : at->second;
     if (order < firstKill) {
@@ -260,15 +254,19 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
   }
   requireSame(shards, "lightcts revisions", [](const RunRecord& r) { return Json(r.lightctsRevision); });
   requireSame(shards, "scene sets (scenes_digest)", [](const RunRecord& r) { return Json(r.scenesDigest); });
-  requireSame(shards, "shard counts", [](const RunRecord& r) { return r.shard.value("total", Json()); });
+  requireSame(shards, "shard counts", [](const RunRecord& r) { return Json(r.shard->total); });
   requireSame(shards, "partitions (each shard must get the same backends, mutants and --timings file)",
-              [](const RunRecord& r) { return r.shard.value("partition", Json()); });
+              [](const RunRecord& r) { return Json(r.shard->partition); });
   requireSameDrivers(shards);
   requireEveryShardOnce(shards);
   // What chose and judged the tests must be the same in every shard (the
   // partition digest covers the tests, not the baselines that judge them).
-  requireSame(shards, "baseline files (expected failures, caselists)", [](const RunRecord& r) { return r.baselineFiles; });
-  requireSame(shards, "selections", [](const RunRecord& r) { return r.selection; });
+  requireSame(shards, "baseline files (expected failures, caselists)", [](const RunRecord& r) {
+    Json files = Json::array();
+    for (const results::BaselineFile& file : r.baselineFiles) files.push_back(file.toJson());
+    return files;
+  });
+  requireSame(shards, "selections", [](const RunRecord& r) { return r.selection.toJson(); });
   requireSame(shards, "mutation checks (killers or all scenes)", [](const RunRecord& r) { return Json(r.mutantCheck); });
   const std::vector<std::string> suffixes = combinationOrder(shards);  // in the unsharded run's order
   const RunRecord& first = shards.front().run;
@@ -277,7 +275,7 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
   // shards did is joined below.
   RunRecord merged = first;
   merged.command = options.commandLine;
-  merged.shard = nullptr;
+  merged.shard = std::nullopt;
   if (!options.evidenceUrl.empty()) merged.evidenceUrl = options.evidenceUrl;
   merged.tests = mergeTests(shards, suffixes);
 
@@ -316,17 +314,20 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
     merged.startedUtc = std::min(merged.startedUtc, s.run.startedUtc);
     longest = std::max(longest, s.run.durationSeconds);
     merged.mergedFrom.push_back(
-        {{"dir", s.dir.string()}, {"shard", s.run.shard}, {"duration_s", s.run.durationSeconds}, {"machine", s.run.machine}});
+        {{"dir", s.dir.string()},
+         {"shard", s.run.shard->toJson()},
+         {"duration_s", s.run.durationSeconds},
+         {"machine", s.run.machine.toJson()}});
   }
   merged.durationSeconds = longest;  // the longest shard: the run's wall time when they ran at once
   // Each shard computed the light budgets of the scenes it held; a scene
   // split across shards has the same budgets in each (they do not depend on
   // the backend), so the first one stays.
-  merged.budgets = Json::object();
+  merged.budgets.clear();
+  std::set<std::string> budgeted;
   for (const Shard& s : shards)
-    if (s.run.budgets.is_object())
-      for (const auto& [scene, budget] : s.run.budgets.items())
-        if (!merged.budgets.contains(scene)) merged.budgets[scene] = budget;
+    for (const results::SceneBudgetRecord& budget : s.run.budgets)
+      if (budgeted.insert(budget.scene).second) merged.budgets.push_back(budget);
 
   // Everything checked: now the folder is written.
   fs::create_directories(outDir);
@@ -340,10 +341,9 @@ int mergeRuns(const MergeOptions& options, std::ostream& out) {
   }
   // Each shard kept the images of at most --evidence-limit failures; the
   // merged run keeps at most that many in all, the first in its order.
-  if (merged.evidenceLimit.is_number_integer())
-    limitEvidenceImages(merged.tests, outDir, merged.evidenceLimit.get<int>());
+  if (merged.evidenceLimit) limitEvidenceImages(merged.tests, outDir, int(*merged.evidenceLimit));
   mergeLogs(shards, outDir / "logs");
-  writeRunOutputs(merged.toJson(), outDir);
+  writeRunOutputs(merged, outDir);
 
   for (const BackendRecord& b : merged.backends) {
     out << "merge: " << b.backend << ": " << comparison::backendStatusName(b.status)

@@ -41,22 +41,20 @@ std::string utcTimestamp() {
   return text;
 }
 
-nlohmann::ordered_json machineJson() {
+results::MachineRecord thisMachine() {
   char host[256] = {};
   gethostname(host, sizeof host - 1);
-  return {{"hostname", host},
-          {"cpu", fieldOf("/proc/cpuinfo", "model name", ':')},
-          {"cores", std::thread::hardware_concurrency()},
-          {"os", fieldOf("/etc/os-release", "PRETTY_NAME", '=')}};
+  return {host, fieldOf("/proc/cpuinfo", "model name", ':'), (long long)std::thread::hardware_concurrency(),
+          fieldOf("/etc/os-release", "PRETTY_NAME", '=')};
 }
 
-nlohmann::ordered_json baselineFileJson(const std::string& kind, const std::string& path) {
+results::BaselineFile baselineFile(const std::string& kind, const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::invalid_argument("cannot read " + path);
   std::ostringstream bytes;
   bytes << in.rdbuf();
   const std::string data = bytes.str();
-  return {{"kind", kind}, {"path", path}, {"sha256", baking::toHex(baking::sha256(data.data(), data.size()))}};
+  return {kind, path, baking::toHex(baking::sha256(data.data(), data.size()))};
 }
 
 }  // namespace runner

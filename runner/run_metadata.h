@@ -2,7 +2,7 @@
 // from a vendor can be read without asking.
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "results/run_records.h"
 
 #include <string>
 
@@ -10,11 +10,11 @@ namespace runner {
 
 std::string revision();      // `git describe --always --dirty` of the source at build time, or "unknown"
 std::string utcTimestamp();  // now, ISO 8601 UTC: 2026-12-01T15:04:05Z
-nlohmann::ordered_json machineJson();  // hostname, cpu, cores, os
-// {"kind": kind, "path": path, "sha256": hex digest of its bytes}: a file
-// that decided how a run was chosen or judged (a caselist, an
-// expected-failures file), so a result says exactly how it was made. Throws
-// std::invalid_argument when the file cannot be read.
-nlohmann::ordered_json baselineFileJson(const std::string& kind, const std::string& path);
+results::MachineRecord thisMachine();  // hostname, cpu, cores, os
+// A file that decided how a run was chosen or judged (a caselist, an
+// expected-failures file) with the digest of its bytes, so a result says
+// exactly how it was made. Throws std::invalid_argument when the file cannot
+// be read.
+results::BaselineFile baselineFile(const std::string& kind, const std::string& path);
 
 }  // namespace runner

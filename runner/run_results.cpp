@@ -93,11 +93,11 @@ void removeStaleRunOutputs(const fs::path& outDir) {
   for (const fs::path& file : stale) fs::remove(file);
 }
 
-void writeRunOutputs(const Json& results, const fs::path& outDir) {
-  reports::writeHtmlReport(results, outDir / "report");
-  reports::writeJunit(results, outDir / "junit.xml");
-  reports::writeRunCsvs(results, outDir);  // results.csv, failures.csv (deqp-runner's lists)
-  imaging::writeFileAtomically(outDir / "results.json", results.dump(1) + "\n");
+void writeRunOutputs(const results::RunRecord& run, const fs::path& outDir) {
+  reports::writeHtmlReport(run, outDir / "report");
+  reports::writeJunit(run, outDir / "junit.xml");
+  reports::writeRunCsvs(run, outDir);  // results.csv, failures.csv (deqp-runner's lists)
+  imaging::writeFileAtomically(outDir / "results.json", run.toJson().dump(1) + "\n");
 }
 
 }  // namespace runner

@@ -38,6 +38,6 @@ std::vector<std::string> admissibleLines(const std::vector<results::AdmissibleRe
 void removeStaleRunOutputs(const std::filesystem::path& outDir);
 // The report, junit.xml, results.csv and failures.csv, then results.json
 // last: its presence says the run finished and the other files are complete.
-void writeRunOutputs(const nlohmann::ordered_json& results, const std::filesystem::path& outDir);
+void writeRunOutputs(const results::RunRecord& run, const std::filesystem::path& outDir);
 
 }  // namespace runner

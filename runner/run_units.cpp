@@ -107,7 +107,7 @@ RunUnits planRunUnits(const RunOptions& options, const RunInputs& inputs, std::o
                             options.scenesDir;
     if (!options.mutants.empty())
       throw std::invalid_argument("--mutant " + name + ": " + why + "; select one, or use --mutants-all-scenes");
-    plan.mutantsNotChecked.push_back({{"mutant", name}, {"reason", why}});
+    plan.mutantsNotChecked.push_back({name, why});
   }
   if (units.empty()) throw std::invalid_argument("nothing to run: the selection holds no killer of any mutant");
   if (!plan.mutantsNotChecked.empty())
@@ -120,14 +120,14 @@ RunUnits planRunUnits(const RunOptions& options, const RunInputs& inputs, std::o
     const std::vector<int> shardOf = assignShards(unitCosts(units, inputs.timings), options.shard->total);
     for (std::size_t u = 0; u < units.size(); ++u)
       if (shardOf[u] == options.shard->index - 1) plan.units.push_back(units[u]);
-    plan.shard = {{"index", options.shard->index},
-                  {"total", options.shard->total},
-                  {"partition", partitionDigest(units, shardOf, options.shard->total)},
-                  {"balanced_by", inputs.timings ? "timings" : "test count"},
-                  {"timings_file", options.timingsFile},
-                  {"tests_in_run", plan.testsInRun},
-                  {"units", plan.units.size()},
-                  {"units_in_run", units.size()}};
+    plan.shard = results::ShardRecord{options.shard->index,
+                                      options.shard->total,
+                                      partitionDigest(units, shardOf, options.shard->total),
+                                      inputs.timings ? "timings" : "test count",
+                                      options.timingsFile,
+                                      (long long)plan.testsInRun,
+                                      (long long)plan.units.size(),
+                                      (long long)units.size()};
   } else {
     plan.units = std::move(units);
   }

@@ -5,11 +5,13 @@
 
 #include "runner/run_inputs.h"
 #include "runner/run_plan.h"
+#include "results/run_records.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
 #include <iosfwd>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -20,8 +22,8 @@ struct RunUnits {
   std::vector<RunUnit> units;             // this shard's (every unit without --shard)
   std::size_t testsInRun = 0;             // the tests (model's and variants') of the whole run, every shard's
   std::vector<shaders::Mutant> mutants;   // those asked for that have a scene to run, in the order asked
-  nlohmann::ordered_json mutantsNotChecked = nlohmann::ordered_json::array();  // the others, with why
-  nlohmann::ordered_json shard = nullptr;  // results.json's "shard": null, or this shard's description
+  std::vector<results::MutantNotChecked> mutantsNotChecked;  // the others, with why
+  std::optional<results::ShardRecord> shard;  // none for a whole run
   // The mutants this shard checks on each combination (index): a shard
   // writes no record of a mutant none of whose tasks it holds.
   std::set<std::pair<shaders::Mutant, std::size_t>> mutantChecks;

@@ -37,17 +37,17 @@ std::string formatMs(double ms) {
 
 // SPEC 5.5 for the report: once per scene this run (or shard) holds,
 // whatever the backends; mutant-only runs check no scene of their own.
-Json lightBudgets(const RunOptions& options, const RunInputs& inputs, const RunUnits& plan, const fs::path& outDir,
+std::vector<results::SceneBudgetRecord> lightBudgets(const RunOptions& options, const RunInputs& inputs, const RunUnits& plan, const fs::path& outDir,
                   std::vector<std::string>& summary) {
   // An interrupted run writes what it has, and budgets it has not computed.
-  if (options.noBudgets || options.mutantsOnly || interruptingSignal() != 0) return Json::object();
+  if (options.noBudgets || options.mutantsOnly || interruptingSignal() != 0) return {};
   const auto started = Clock::now();
   std::set<std::string> heldCases;
   for (const RunUnit& unit : plan.units) heldCases.insert(unit.test.substr(0, unit.test.rfind('.')));
   std::vector<BudgetScene> budgetScenes;
   for (const CatalogueEntry& scene : inputs.catalogue)
     if (heldCases.contains(scene.file.caseName())) budgetScenes.push_back({scene.file.caseName(), scene.file.path});
-  Json budgets = runBudgets(budgetScenes, outDir);
+  std::vector<results::SceneBudgetRecord> budgets = runBudgets(budgetScenes, outDir);
   summary.push_back("run: light budgets of " + std::to_string(budgetScenes.size()) + " scene(s) in " +
                     formatMs(std::chrono::duration<double, std::milli>(Clock::now() - started).count()));
   return budgets;
@@ -80,8 +80,8 @@ void printSummary(const RunOptions& options, const results::RunRecord& run, cons
     out << "run: " << imagesDropped << " failure(s) past --evidence-limit " << options.evidenceLimit
         << " keep their numbers (summary.json) but no images\n";
   out << "slowest tests:\n";
-  for (const Json& s : results::slowestTests(run.tests))
-    out << "  " << formatMs(s["total_ms"].get<double>()) << "  " << s["name"].get<std::string>() << "\n";
+  for (const results::SlowTest& s : results::slowestTests(run.tests))
+    out << "  " << formatMs(s.totalMs) << "  " << s.name << "\n";
   out << "run: results in " << (outDir / "results.json").string() << ", report in "
       << (outDir / "report" / "index.html").string() << std::endl;
 }
@@ -120,14 +120,14 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   run.lightctsRevision = revision();
   run.startedUtc = startedUtc;
   run.command = options.commandLine;
-  run.machine = machineJson();
+  run.machine = thisMachine();
   run.scenesDir = options.scenesDir;
   run.scenesDigest = scenesDigest(sceneFiles, options.scenesDir);
-  run.selection = inputs.selection.toJson();
+  run.selection = inputs.selection.record();
   // Every file that decided how this run was judged or chosen.
   for (const std::string& file : options.expectedFailureFiles)
-    run.baselineFiles.push_back(baselineFileJson("expected-failures", file));
-  for (const std::string& file : options.caselists) run.baselineFiles.push_back(baselineFileJson("caselist", file));
+    run.baselineFiles.push_back(baselineFile("expected-failures", file));
+  for (const std::string& file : options.caselists) run.baselineFiles.push_back(baselineFile("caselist", file));
   for (const shaders::Mutant mutant : plan.mutants) run.mutantsRun.emplace_back(shaders::mutantName(mutant));
   run.mutantCheck = options.mutantsAllScenes ? "all-scenes" : "killers";
   run.mutantsNotChecked = plan.mutantsNotChecked;
@@ -135,7 +135,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   run.evidenceUrl = options.evidenceUrl;
   run.jobs = inputs.jobs;
   run.shard = plan.shard;
-  run.referenceCache = privateCache ? Json("fresh") : Json(referenceCache.string());
+  run.referenceCache = privateCache ? std::string("fresh") : referenceCache.string();
   run.timeoutSeconds = options.timeoutSeconds;
   run.flakeRetries = options.flakeRetries;
   run.flakesFail = options.flakesFail;
@@ -144,7 +144,7 @@ int runSuite(const RunOptions& options, std::ostream& out, std::ostream& err) {
   run.mutants = std::move(records.mutants);
   run.admissible = describedAdmissibleRecords(run.tests);
   run.durationSeconds = std::chrono::duration<double>(Clock::now() - started).count();
-  writeRunOutputs(run.toJson(), outDir);
+  writeRunOutputs(run, outDir);
   printSummary(options, run, records, budgetLines, imagesDropped, outDir, out);
 
   if (const int signal = interruptingSignal(); signal != 0) {

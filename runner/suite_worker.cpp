@@ -26,17 +26,11 @@ namespace {
 using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
-Json finiteOrNull(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
-Json deviceJson(const backends::DeviceInfo& d) {
-  return {{"name", d.name},
-          {"driver", d.driver},
-          {"driver_version", d.driverVersion},
-          {"api_version", d.apiVersion},
-          {"selected_by", d.selectedBy},
-          // What the device promises, which the tolerances use (docs/tolerances.md).
-          {"sub_pixel_bits", d.subPixelPrecisionBits},
-          {"sub_texel_bits", d.subTexelPrecisionBits}};
+results::DeviceRecord deviceRecord(const backends::DeviceInfo& d) {
+  // What the device promises, which the tolerances use (docs/tolerances.md).
+  return {d.name, d.driver, d.driverVersion, d.apiVersion, d.selectedBy, d.subPixelPrecisionBits,
+          d.subTexelPrecisionBits};
 }
 
 void emit(std::ostream& out, const Json& line) { out << line.dump() << '\n' << std::flush; }
@@ -62,60 +56,53 @@ void testHooks(const std::string& test) {
   }
 }
 
+results::Measured finiteOrNone(double value) { return std::isfinite(value) ? results::Measured(value) : std::nullopt; }
+
 // Metrics over every frame checked: counts summed, errors and tightness the
 // largest; the worst pixels are those of the evidence frame.
-Json metricsJson(const conformance::SceneCheck& check) {
-  long long compared = 0, masked = 0, lit = 0, failing = 0, nonFinite = 0;
+results::Metrics metricsOf(const conformance::SceneCheck& check) {
+  results::Metrics m;
   double maxAbs = 0, tightness = 0, rmse = 0;
   for (const conformance::FrameCheck& f : check.frames) {
     const comparison::Comparison& c = f.comparison;
-    compared += c.comparedPixels;
-    masked += c.maskedPixels;
-    lit += c.litComparedPixels;
-    failing += c.failingPixels;
-    nonFinite += c.nonFinitePixels;
+    m.comparedPixels += c.comparedPixels;
+    m.maskedPixels += c.maskedPixels;
+    m.litComparedPixels += c.litComparedPixels;
+    m.failingPixels += c.failingPixels;
+    m.nonFinitePixels += c.nonFinitePixels;
     maxAbs = std::max(maxAbs, c.maxAbsError);
     tightness = std::max(tightness, c.maxErrorOverTolerance);
     rmse = std::max(rmse, c.rmse);
   }
   const comparison::Comparison& e = check.evidence().comparison;
-  Json worst = Json::array();
   for (const comparison::PixelReport& p : e.worst) {
-    Json pixel = {{"x", p.x}, {"y", p.y}};
-    for (const auto& [key, values] : {std::pair{"result", p.result}, std::pair{"reference", p.reference},
-                                      std::pair{"tolerance", p.tolerance}})
-      pixel[key] = Json::array({finiteOrNull(values[0]), finiteOrNull(values[1]), finiteOrNull(values[2])});
-    pixel["tolerance_scale"] = e.toleranceScale;
-    worst.push_back(pixel);
+    results::WorstPixel pixel;
+    pixel.x = p.x;
+    pixel.y = p.y;
+    for (int c = 0; c < 3; ++c) {
+      pixel.result[std::size_t(c)] = finiteOrNone(p.result[c]);
+      pixel.reference[std::size_t(c)] = finiteOrNone(p.reference[c]);
+      pixel.tolerance[std::size_t(c)] = finiteOrNone(p.tolerance[c]);
+    }
+    pixel.toleranceScale = e.toleranceScale;
+    m.worst.push_back(pixel);
   }
-  return {{"compared_pixels", compared}, {"masked_pixels", masked},   {"lit_compared_pixels", lit},
-          {"failing_pixels", failing},
-          {"non_finite_pixels", nonFinite}, {"max_failing_pixels", e.maxFailingPixels},
-          {"max_abs_error", finiteOrNull(maxAbs)}, {"rmse", finiteOrNull(rmse)},
-          {"tightness", finiteOrNull(tightness)}, {"tightness_is_infinite", std::isinf(tightness)},
-          {"expect_fail", e.expectFail}, {"worst", worst}};
+  m.maxFailingPixels = e.maxFailingPixels;
+  m.maxAbsError = finiteOrNone(maxAbs);
+  m.rmse = finiteOrNone(rmse);
+  m.tightness = finiteOrNone(tightness);
+  m.tightnessIsInfinite = std::isinf(tightness);
+  m.expectFail = e.expectFail;
+  return m;
 }
 
-Json framesJson(const conformance::SceneCheck& check) {
-  Json frames = Json::array();
+std::vector<results::FrameRecord> framesOf(const conformance::SceneCheck& check) {
+  std::vector<results::FrameRecord> frames;
   for (const conformance::FrameCheck& f : check.frames)
-    frames.push_back({{"frame", f.frame},
-                      {"verdict", comparison::verdictName(f.comparison.verdict)},
-                      {"failing_pixels", f.comparison.failingPixels},
-                      {"max_abs_error", finiteOrNull(f.comparison.maxAbsError)},
-                      {"tightness", finiteOrNull(f.comparison.maxErrorOverTolerance)},
-                      {"ideal_error", finiteOrNull(f.idealError)},
-                      {"popping_jump", finiteOrNull(f.poppingJump)}});
+    frames.push_back({f.frame, f.comparison.verdict, f.comparison.failingPixels, finiteOrNone(f.comparison.maxAbsError),
+                      finiteOrNone(f.comparison.maxErrorOverTolerance), finiteOrNone(f.idealError),
+                      finiteOrNone(f.poppingJump)});
   return frames;
-}
-
-Json evidenceJson(const std::string& dir, int frame) {
-  return {{"frame", frame},
-          {"result_png", dir + "/result.png"},
-          {"reference_png", dir + "/reference.png"},
-          {"error_mask_png", dir + "/error-mask.png"},
-          {"viewer", dir + "/viewer.html"},
-          {"summary_json", dir + "/summary.json"}};
 }
 
 class Worker {
@@ -184,7 +171,7 @@ class Worker {
       backends::requireExpectedDriver(device, plan_.expectDriver);
       backendShaders_ = task;
       if (!announced_)
-        emit(out_, {{protocol::kKind, protocol::kDevice}, {protocol::kDeviceField, deviceJson(device)}});
+        emit(out_, {{protocol::kKind, protocol::kDevice}, {protocol::kDeviceField, deviceRecord(device).toJson()}});
       announced_ = true;
       return 0;
     } catch (const backends::NotSupportedError& e) {
@@ -215,17 +202,15 @@ class Worker {
     const conformance::SceneCheck check = conformance::checkScene(references, *backend_, options);
     result.rawVerdict = check.verdict;
     result.message = check.qualityWarning;  // why a QualityWarning checks nothing; "" otherwise
-    result.metrics = metricsJson(check);
-    if (check.caughtScale) {
-      // docs/results-format.md: the smallest relative brightness errors caught.
-      result.metrics["smallest_caught_brighter"] = finiteOrNull(check.caughtScale->brighter);
-      result.metrics["smallest_caught_darker"] = finiteOrNull(check.caughtScale->darker);
-    }
-    result.frames = framesJson(check);
-    result.poppingScore = check.poppingScore ? finiteOrNull(*check.poppingScore) : Json(nullptr);
+    result.metrics = metricsOf(check);
+    if (check.caughtScale)  // docs/results-format.md: the smallest relative brightness errors caught
+      result.metrics->caught =
+          results::CaughtBrightness{finiteOrNone(check.caughtScale->brighter), finiteOrNone(check.caughtScale->darker)};
+    result.frames = framesOf(check);
+    result.poppingScore = check.poppingScore ? finiteOrNone(*check.poppingScore) : std::nullopt;
     const conformance::StageTimings& t = check.timings;
     result.timingsMs = results::StageTimes{t.reference, t.pipeline, t.draw, t.readback, t.compare, t.total};
-    result.evidence = nullptr;
+    result.evidence = std::nullopt;
     // Every failing test leaves evidence; a mutant leaves it for its first
     // kill; an expect_fail scene whose known mismatch was detected leaves it
     // too, so the report shows how far off that mismatch is.
@@ -237,7 +222,7 @@ class Worker {
         isMutant ? mutantEvidenceDir(task.mutant, plan_.combination.suffix) : testEvidenceDir(task.test);
     comparison::writeEvidence((fs::path(plan_.outDir) / dir).string(), check.evidence().comparison,
                               check.evidenceResult, check.evidenceReference, task.test, &check.evidenceShadowMaps);
-    result.evidence = evidenceJson(dir, check.evidenceFrame);
+    result.evidence = results::EvidenceRecord::inFolder(dir, check.evidenceFrame);
   }
 
   const WorkerPlan& plan_;

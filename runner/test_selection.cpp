@@ -78,13 +78,13 @@ std::vector<bool> TestSelection::select(const std::vector<std::string>& names) c
   return chosen;
 }
 
-nlohmann::ordered_json TestSelection::toJson() const {
+results::SelectionRecord TestSelection::record() const {
   auto globs = [](const std::vector<NamePattern>& patterns) {
-    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    std::vector<std::string> list;
     for (const NamePattern& p : patterns) list.push_back(p.glob);
     return list;
   };
-  return {{"include", globs(includes_)}, {"exclude", globs(excludes_)}, {"caselists", caselistFiles_}};
+  return {globs(includes_), globs(excludes_), caselistFiles_};
 }
 
 }  // namespace runner

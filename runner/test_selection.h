@@ -11,6 +11,8 @@
 // named with its file and line.
 #pragma once
 
+#include "results/run_records.h"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -41,8 +43,8 @@ class TestSelection {
   // or saying that the selection leaves no test.
   std::vector<bool> select(const std::vector<std::string>& names) const;
 
-  // For results.json: {"include": [...], "exclude": [...], "caselists": [...]}.
-  nlohmann::ordered_json toJson() const;
+  // For results.json: the globs and files as given.
+  results::SelectionRecord record() const;
   const std::vector<std::string>& caselistFiles() const { return caselistFiles_; }
 
  private:

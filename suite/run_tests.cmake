@@ -184,7 +184,7 @@ add_run_compare_test(crashing-run-is-a-regression 1 ${compare_base} ${compare_cr
 add_run_compare_test(crash-to-pass-is-a-fix 0 ${compare_crash} ${compare_base} ""
   "fix ${one_test}: Crash -> Pass.0 regressions, 1 fix," "run-compare-base;run-compare-crash")
 add_run_compare_test(missing-file-exits-2 2 ${run_out}/no-such-run/results.json ${compare_base} ""
-  "cannot read .*no-such-run/results.json" run-compare-base)
+  "no-such-run/results.json: cannot be read" run-compare-base)
 add_run_compare_test(not-a-results-file-exits-2 2 ${CMAKE_CURRENT_SOURCE_DIR}/bad-scenes/typo-in-range.json
   ${compare_base} "" "typo-in-range.json: not a lightcts results.json" run-compare-base)
 # `run` has a subcommand now, so its --out is checked by `run` (not the parser):

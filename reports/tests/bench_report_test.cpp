@@ -229,7 +229,7 @@ TEST(BenchReport, SharesThePageFrameWithTheConformanceReport) {
   const std::string head = frame.str();
   const std::string base = head.substr(head.find("<style>"), head.find("</style>") - head.find("<style>"));
   const std::string bench = benchOverviewHtml(testing::sampleBench());
-  const std::string report = htmlReport(nlohmann::ordered_json::object(), "run", "run/report");
+  const std::string report = htmlReport(results::RunRecord{}, "run", "run/report");
   for (const std::string* page : {&bench, &report}) {
     EXPECT_EQ(page->rfind("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>", 0), 0u);
     EXPECT_EQ(page->find(base), page->find("<style>")) << "the base stylesheet opens the <style>";

@@ -18,7 +18,7 @@ using comparison::Verdict;
 using imaging::testing::readFile;
 
 TEST(RunCsv, ResultsListEveryTestWithItsVerdictAndSeconds) {
-  EXPECT_EQ(resultsCsv(testing::sampleResults()),
+  EXPECT_EQ(resultsCsv(testing::records(testing::sampleResults())),
             "attenuation.point-d-0.vulkan,Pass,0.025\n"
             "attenuation.point-d-half-range.vulkan,Fail,1.500\n"
             "limits.popping-64.vulkan,QualityWarning,0.320\n"
@@ -32,7 +32,7 @@ TEST(RunCsv, ResultsListEveryTestWithItsVerdictAndSeconds) {
 }
 
 TEST(RunCsv, FailuresListTheRunFailuresWithAReason) {
-  EXPECT_EQ(failuresCsv(testing::sampleResults()),
+  EXPECT_EQ(failuresCsv(testing::records(testing::sampleResults())),
             "# failures.csv of the lightcts run started 2026-11-25T10:00:00Z (lightcts v0.1-42-gabc1234)\n"
             "# The run failures as expected failures: `lightcts run --expected-failures` reads this file\n"
             "# as it is. Copy it to seed a driver's list; replace each reason after '#' with the cause.\n"
@@ -47,7 +47,7 @@ TEST(RunCsv, FailuresListTheRunFailuresWithAReason) {
 
 TEST(RunCsv, FailuresLoadBackAsExpectedFailures) {
   runner::ExpectedFailures expected;
-  ASSERT_NO_THROW(expected.parse(failuresCsv(testing::sampleResults()), "failures.csv"));
+  ASSERT_NO_THROW(expected.parse(failuresCsv(testing::records(testing::sampleResults())), "failures.csv"));
   const runner::ExpectedFailure* fail = expected.find("attenuation.point-d-half-range.vulkan");
   ASSERT_NE(fail, nullptr);
   EXPECT_EQ(fail->status, Verdict::Fail);
@@ -71,7 +71,7 @@ TEST(RunCsv, MessagesWithCommasHashesAndLineBreaksStillLoad) {
   results["tests"][2]["verdict"] = "Crash";
   results["tests"][2]["message"] = "";
   results["tests"][2]["metrics"] = nullptr;
-  const std::string text = failuresCsv(results);
+  const std::string text = failuresCsv(testing::records(results));
   EXPECT_NE(text.find("attenuation.point-d-0.vulkan,Fail  # a, b # c\n"), std::string::npos) << text;
   EXPECT_NE(text.find("attenuation.point-d-half-range.vulkan,Fail  # 37 failing of 4096"), std::string::npos) << text;
   EXPECT_NE(text.find("limits.popping-64.vulkan,Crash  # Crash with no message\n"), std::string::npos) << text;
@@ -84,9 +84,9 @@ TEST(RunCsv, MessagesWithCommasHashesAndLineBreaksStillLoad) {
 TEST(RunCsv, UnknownVerdictsAreShownNotListed) {
   auto results = testing::sampleResults();
   results["tests"][0]["verdict"] = "pass";
-  const std::string text = failuresCsv(results);
+  const std::string text = failuresCsv(testing::records(results));
   EXPECT_NE(text.find("# attenuation.point-d-0.vulkan,pass: unknown verdict, not listed\n"), std::string::npos) << text;
-  EXPECT_NE(resultsCsv(results).find("attenuation.point-d-0.vulkan,pass,0.025\n"), std::string::npos);
+  EXPECT_NE(resultsCsv(testing::records(results)).find("attenuation.point-d-0.vulkan,pass,0.025\n"), std::string::npos);
 }
 
 // An interrupted run's NotRun test is a run failure, but no line an
@@ -95,7 +95,7 @@ TEST(RunCsv, NotRunTestsAreShownNotListed) {
   auto results = testing::sampleResults();
   results["tests"][0]["verdict"] = "NotRun";
   results["tests"][0]["message"] = "not run: the run was interrupted by SIGINT first";
-  const std::string text = failuresCsv(results);
+  const std::string text = failuresCsv(testing::records(results));
   EXPECT_NE(text.find("# attenuation.point-d-0.vulkan,NotRun: not run: the run was interrupted by SIGINT first; not "
                       "listed, an expected-failures line cannot name NotRun\n"),
             std::string::npos)
@@ -109,24 +109,20 @@ TEST(RunCsv, NamesWithCommasAreQuotedInResults) {
   auto results = testing::sampleResults();
   results["tests"][0]["name"] = "a,b \"c\".vulkan";
   results["tests"][0]["verdict"] = "Fail";
-  const std::string text = resultsCsv(results);
+  const std::string text = resultsCsv(testing::records(results));
   EXPECT_EQ(text.substr(0, text.find('\n')), "\"a,b \"\"c\"\".vulkan\",Fail,0.025");
-  EXPECT_NE(failuresCsv(results).find("\n# a,b \"c\".vulkan,Fail: cannot be listed"), std::string::npos);
+  EXPECT_NE(failuresCsv(testing::records(results)).find("\n# a,b \"c\".vulkan,Fail: cannot be listed"), std::string::npos);
 }
 
-TEST(RunCsv, RejectsWhatIsNotAResultsFile) {
-  EXPECT_THROW(resultsCsv(nlohmann::ordered_json::array()), std::invalid_argument);
-  EXPECT_THROW(failuresCsv(nlohmann::ordered_json{{"format", "something-else"}}), std::invalid_argument);
-  EXPECT_EQ(resultsCsv(nlohmann::ordered_json::object()), "");
-}
+TEST(RunCsv, AnEmptyRunHasNoLines) { EXPECT_EQ(resultsCsv(results::RunRecord{}), ""); }
 
 TEST(RunCsv, WritesBothFilesAtomically) {
   const fs::path dir = fs::path(::testing::TempDir()) / "reports_csv_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  writeRunCsvs(testing::sampleResults(), dir);
-  EXPECT_EQ(readFile(dir / "results.csv"), resultsCsv(testing::sampleResults()));
-  EXPECT_EQ(readFile(dir / "failures.csv"), failuresCsv(testing::sampleResults()));
+  writeRunCsvs(testing::records(testing::sampleResults()), dir);
+  EXPECT_EQ(readFile(dir / "results.csv"), resultsCsv(testing::records(testing::sampleResults())));
+  EXPECT_EQ(readFile(dir / "failures.csv"), failuresCsv(testing::records(testing::sampleResults())));
   long long entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 2) << "no temporary file is left behind";

@@ -44,7 +44,7 @@ void expectCounts(const std::string& tag, Counts expected) {
 }
 
 TEST(Junit, CountsPerBackendMutantsAndTotal) {
-  const std::string xml = junitXml(testing::sampleResults());
+  const std::string xml = junitXml(testing::records(testing::sampleResults()));
   expectCounts(suiteTag(xml, "vulkan"), {"4", "1", "1", "1"});  // the QualityWarning is skipped
   expectCounts(suiteTag(xml, "gl-egl-softpipe"), {"6", "2", "1", "2"});
   expectCounts(suiteTag(xml, "gl-osmesa"), {"1", "0", "0", "1"});
@@ -63,7 +63,7 @@ TEST(Junit, CountsPerBackendMutantsAndTotal) {
 }
 
 TEST(Junit, TestCasesNameGroupBackendAndTime) {
-  const std::string xml = junitXml(testing::sampleResults());
+  const std::string xml = junitXml(testing::records(testing::sampleResults()));
   EXPECT_NE(xml.find("<testcase classname=\"vulkan.attenuation\" name=\"attenuation.point-d-half-range.vulkan\" "
                      "time=\"1.500\">\n      <failure message=\"Fail: 37 failing of 4096 compared pixels"),
             std::string::npos)
@@ -87,7 +87,7 @@ TEST(Junit, ClassnameIsBackendDotGroup) {
   EXPECT_EQ(junitClassname("gl-egl-softpipe", "per-object"), "gl-egl-softpipe.per-object");
   EXPECT_EQ(junitClassname("", "attenuation"), "attenuation");
   EXPECT_EQ(junitClassname("vulkan", ""), "vulkan");
-  const std::string xml = junitXml(testing::sampleResults());
+  const std::string xml = junitXml(testing::records(testing::sampleResults()));
   const std::regex testcase("<testcase classname=\"([^\"]*)\" name=\"([^\"]*)\"");
   long long cases = 0;
   for (auto it = std::sregex_iterator(xml.begin(), xml.end(), testcase); it != std::sregex_iterator(); ++it) {
@@ -106,7 +106,7 @@ TEST(Junit, ClassnameIsBackendDotGroup) {
 }
 
 TEST(Junit, ExpectedFailAndQualityWarningAreSkippedWithTheirReasons) {
-  const std::string xml = junitXml(testing::sampleResults());
+  const std::string xml = junitXml(testing::records(testing::sampleResults()));
   EXPECT_NE(xml.find("<skipped message=\"ExpectedFail: softpipe rounds &lt;pow&gt; &amp; &quot;exp2&quot;\" "
                      "type=\"ExpectedFail\"/>"),
             std::string::npos)
@@ -119,7 +119,7 @@ TEST(Junit, ExpectedFailAndQualityWarningAreSkippedWithTheirReasons) {
 }
 
 TEST(Junit, EscapesTextAndAttributes) {
-  const std::string xml = junitXml(testing::sampleResults());
+  const std::string xml = junitXml(testing::records(testing::sampleResults()));
   // Crash message: the first line in the attribute, all of it in the element.
   EXPECT_NE(xml.find("message=\"Crash: worker crashed: signal 11 &lt;SIGSEGV&gt; &amp; &quot;core&quot;\""),
             std::string::npos);
@@ -136,7 +136,7 @@ TEST(Junit, UnknownVerdictFailsAndControlCharactersAreReplaced) {
   auto results = testing::sampleResults();
   results["tests"][0]["verdict"] = "Maybe";
   results["tests"][0]["message"] = std::string("bell\x07 and \xFF");
-  const std::string xml = junitXml(results);
+  const std::string xml = junitXml(testing::records(results));
   expectCounts(suiteTag(xml, "vulkan"), {"4", "2", "1", "1"});
   EXPECT_NE(xml.find("type=\"Maybe\""), std::string::npos);
   EXPECT_NE(xml.find("bell\\x07 and \xEF\xBF\xBD"), std::string::npos);
@@ -144,23 +144,37 @@ TEST(Junit, UnknownVerdictFailsAndControlCharactersAreReplaced) {
 }
 
 // results.json is not trusted: a word that comparison/verdict.h or
-// run_status.h does not know, a wrongly cased one included, is never a pass.
+// run_status.h does not know, a wrongly cased one included, is never a pass:
+// a test's is a failure under its own word, a mutant's reads as Crash, a
+// backend's as error (results/run_records.h).
 TEST(Junit, WronglyCasedVerdictAndUnknownStatusesCountAgainstTheRun) {
   auto results = testing::sampleResults();
   results["tests"][0]["verdict"] = "pass";
   results["mutants"][0]["status"] = "Killed";
   results["backends"][2]["status"] = "Skipped";  // gl-osmesa, which has no tests
-  const std::string xml = junitXml(results);
+  const std::string xml = junitXml(testing::records(results));
   expectCounts(suiteTag(xml, "vulkan"), {"4", "2", "1", "1"});
-  expectCounts(suiteTag(xml, "mutants"), {"4", "2", "1", "0"});
+  expectCounts(suiteTag(xml, "mutants"), {"4", "1", "2", "0"});
   expectCounts(suiteTag(xml, "gl-osmesa"), {"1", "0", "1", "0"});
-  EXPECT_NE(xml.find("message=\"unknown mutant status &quot;Killed&quot;\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("type=\"pass\""), std::string::npos) << xml;  // the test's own word, as a failure
+}
+
+// The reports read the records, and the records read results.json's keys:
+// a key renamed in the file (or in the records' writer alone) changes what
+// the report says, so a report cannot drift from the format unnoticed.
+TEST(Junit, ARenamedKeyChangesTheReport) {
+  nlohmann::ordered_json written = testing::sampleRun().toJson();
+  EXPECT_NE(junitXml(testing::records(written)).find("Fail: 37 failing of 4096"), std::string::npos);
+  nlohmann::ordered_json& metrics = written["tests"][1]["metrics"];
+  metrics["failing_pixel"] = metrics["failing_pixels"];
+  metrics.erase("failing_pixels");
+  EXPECT_EQ(junitXml(testing::records(written)).find("Fail: 37 failing of 4096"), std::string::npos);
 }
 
 TEST(Junit, FlakePassesWithOutput) {
   auto results = testing::sampleResults();
   results["tests"][0]["verdict"] = "Flake";
-  const std::string xml = junitXml(results);
+  const std::string xml = junitXml(testing::records(results));
   expectCounts(suiteTag(xml, "vulkan"), {"4", "1", "1", "1"});  // the QualityWarning is skipped
   const std::size_t flake = xml.find("name=\"attenuation.point-d-0.vulkan\"");
   ASSERT_NE(flake, std::string::npos);
@@ -175,7 +189,7 @@ std::string caseBody(const std::string& xml, const std::string& test) {
 
 TEST(Junit, AFailureNamesItsEvidencePage) {
   const std::string page = "evidence/attenuation.point-d-half-range.vulkan/viewer.html";
-  const std::string body = caseBody(junitXml(testing::sampleResults()), "attenuation.point-d-half-range.vulkan");
+  const std::string body = caseBody(junitXml(testing::records(testing::sampleResults())), "attenuation.point-d-half-range.vulkan");
   EXPECT_NE(body.find("<failure message=\"Fail: 37 failing of 4096 compared pixels, max error 0.25, tightness 812.5 "
                       "(evidence: " + page + ")\""),
             std::string::npos)
@@ -186,7 +200,7 @@ TEST(Junit, AFailureNamesItsEvidencePage) {
 TEST(Junit, EvidenceUrlTemplateReplacesEveryTestMark) {
   auto results = testing::sampleResults();
   results["evidence_url"] = "https://ci.example/{test}/artifacts/{test}.html";
-  const std::string body = caseBody(junitXml(results), "attenuation.point-d-half-range.vulkan");
+  const std::string body = caseBody(junitXml(testing::records(results)), "attenuation.point-d-half-range.vulkan");
   const std::string url =
       "https://ci.example/attenuation.point-d-half-range.vulkan/artifacts/attenuation.point-d-half-range.vulkan.html";
   EXPECT_NE(body.find("(evidence: " + url + ")"), std::string::npos) << body;
@@ -199,7 +213,7 @@ TEST(Junit, AFailurePastTheEvidenceLimitNamesItsNumbers) {
   results["tests"][1]["evidence"] = {{"frame", 0},
                                      {"summary_json", "evidence/attenuation.point-d-half-range.vulkan/summary.json"},
                                      {"images_kept", false}};
-  const std::string body = caseBody(junitXml(results), "attenuation.point-d-half-range.vulkan");
+  const std::string body = caseBody(junitXml(testing::records(results)), "attenuation.point-d-half-range.vulkan");
   EXPECT_NE(body.find("(evidence: evidence/attenuation.point-d-half-range.vulkan/summary.json)"), std::string::npos)
       << body;
   EXPECT_EQ(body.find("ci.example"), std::string::npos) << body;
@@ -209,28 +223,26 @@ TEST(Junit, ASurvivorOfItsKillersNamesThem) {
   auto results = testing::sampleResults();
   results["mutant_check"] = "killers";
   results["mutants"][2]["killers"] = {"attenuation.point-5mm-above-floor", "attenuation.point-d-zero"};
-  const std::string body = caseBody(junitXml(results), "mutants.distance-clamp-1e-4.vulkan");
+  const std::string body = caseBody(junitXml(testing::records(results)), "mutants.distance-clamp-1e-4.vulkan");
   EXPECT_NE(body.find("<failure message=\"survived: its killers (attenuation.point-5mm-above-floor, "
                       "attenuation.point-d-zero) did not catch"),
             std::string::npos)
       << body;
 }
 
-TEST(Junit, RejectsWhatIsNotAResultsFile) {
-  EXPECT_THROW(junitXml(nlohmann::ordered_json::array()), std::invalid_argument);
-  EXPECT_THROW(junitXml(nlohmann::ordered_json{{"format", "something-else"}}), std::invalid_argument);
-  const std::string empty = junitXml(nlohmann::ordered_json::object());
+TEST(Junit, AnEmptyRunIsAnEmptyReport) {
+  const std::string empty = junitXml(results::RunRecord{});
   EXPECT_NE(empty.find("<testsuites name=\"lightcts\" tests=\"0\""), std::string::npos);
 }
 
 TEST(Junit, WritesTheFileAtomically) {
   const fs::path dir = fs::path(::testing::TempDir()) / "reports_junit_test";
   fs::remove_all(dir);
-  writeJunit(testing::sampleResults(), dir / "junit.xml");
+  writeJunit(testing::records(testing::sampleResults()), dir / "junit.xml");
   std::ifstream file(dir / "junit.xml");
   std::stringstream text;
   text << file.rdbuf();
-  EXPECT_EQ(text.str(), junitXml(testing::sampleResults()));
+  EXPECT_EQ(text.str(), junitXml(testing::records(testing::sampleResults())));
   long long entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 1) << "no temporary file is left behind";

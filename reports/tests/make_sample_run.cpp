@@ -51,10 +51,11 @@ int main(int argc, char** argv) {
       fs::create_directories(file.parent_path());
       imaging::writePngPreview(file.string(), sampleImage(seed++, path.find("error-mask") != std::string::npos));
     }
-    imaging::writeFileAtomically(run / "results.json", results.dump(2) + "\n");
-    reports::writeJunit(results, run / "junit.xml");
-    reports::writeHtmlReport(results, run / "report");
-    if (argc == 3) fs::remove(run / results["tests"][1]["evidence"]["error_mask_png"].get<std::string>());
+    const results::RunRecord records = reports::testing::records(results);
+    imaging::writeFileAtomically(run / "results.json", records.toJson().dump(2) + "\n");
+    reports::writeJunit(records, run / "junit.xml");
+    reports::writeHtmlReport(records, run / "report");
+    if (argc == 3) fs::remove(run / records.tests[1].evidence->errorMaskPng);
     std::cout << "wrote " << (run / "report" / "index.html").string() << '\n';
     return 0;
   } catch (const std::exception& e) {

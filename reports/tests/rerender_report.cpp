@@ -5,10 +5,10 @@
 //   rerender_report RUN_DIR && check_images_load.sh RUN_DIR
 #include "reports/html_report.h"
 #include "reports/junit_writer.h"
+#include "results/results_file.h"
 
 #include <exception>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -18,11 +18,9 @@ int main(int argc, char** argv) {
   }
   try {
     const std::filesystem::path run(argv[1]);
-    std::ifstream file(run / "results.json");
-    if (!file) throw std::runtime_error("cannot read " + (run / "results.json").string());
-    const auto results = nlohmann::ordered_json::parse(file);
-    reports::writeJunit(results, run / "junit.xml");
-    reports::writeHtmlReport(results, run / "report");
+    const results::RunRecord records = results::readResultsFile(run / "results.json");
+    reports::writeJunit(records, run / "junit.xml");
+    reports::writeHtmlReport(records, run / "report");
     std::cout << "wrote " << (run / "report" / "index.html").string() << " and " << (run / "junit.xml").string()
               << '\n';
     return 0;

@@ -4,6 +4,8 @@
 // make_sample_run, which also writes the PNG files it names.
 #pragma once
 
+#include "results/run_records.h"
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -12,6 +14,10 @@
 namespace reports::testing {
 
 nlohmann::ordered_json sampleResults();
+
+// A results.json read into records, as every report reads a run.
+inline results::RunRecord records(const nlohmann::ordered_json& results) { return results::RunRecord::fromJson(results); }
+inline results::RunRecord sampleRun() { return records(sampleResults()); }
 
 // Every PNG path (relative to the run folder) that sampleResults names.
 std::vector<std::string> samplePngPaths(const nlohmann::ordered_json& results);

@@ -159,7 +159,9 @@ TEST(ResultRules, FlakesFailARunOnlyWhenFlakesFailIsSet) {
 
 TEST(ResultRules, AShardPassesWithASurvivorThatAnotherShardMayKill) {
   RunRecord shard = passingRun();
-  shard.shard = {{"index", 1}, {"total", 2}};
+  shard.shard = ShardRecord{};
+  shard.shard->index = 1;
+  shard.shard->total = 2;
   shard.mutants.push_back(mutant(MutantStatus::Survived));
   EXPECT_TRUE(runPasses(shard));
   shard.mutants.push_back(mutant(MutantStatus::Crash));

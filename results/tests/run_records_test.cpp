@@ -24,7 +24,15 @@ RunRecord sampleRun() {
   t.backend = "vulkan";
   t.verdict = Verdict::Flake;
   t.rawVerdict = Verdict::Fail;
-  t.metrics = {{"tightness", 1.5}};
+  t.metrics = Metrics{};
+  t.metrics->tightness = 1.5;
+  t.metrics->maxAbsError = std::nullopt;  // not finite: null
+  t.metrics->worst.push_back({3, 4, {0.5, std::nullopt, 1.0}, {0.25, 0.25, 0.25}, {0.01, 0.01, 0.01}, 2});
+  t.metrics->caught = CaughtBrightness{4.2e-5, std::nullopt};
+  t.frames = std::vector<FrameRecord>{{0, Verdict::Fail, 37, 0.25, 812.5, std::nullopt, std::nullopt},
+                                      {1, Verdict::Pass, 0, 0.0, 0.1, 0.2, 0.05}};
+  t.poppingScore = 0.05;
+  t.evidence = EvidenceRecord::inFolder("evidence/attenuation.a.vulkan", 0);
   t.timingsMs = StageTimes{2.0, 3.0, 4.0, 1.0, 1.0, 12.0};
   t.attempts = {{Verdict::Fail, "past tolerance", "logs/vulkan.log"}, {Verdict::Pass, "", "logs/vulkan.retry-1.log"}};
   run.tests.push_back(t);
@@ -34,13 +42,31 @@ RunRecord sampleRun() {
   b.counts = {{Verdict::Flake, 1}};
   b.mutantCounts = {1, 0, 0};
   b.taskTimes = {2, 3.5, 20.0};
+  b.device = DeviceRecord{"llvmpipe", "llvmpipe", "Mesa 22.3.6", "1.3.230", "default", 8, 8};
   run.backends.push_back(b);
+  run.machine = {"ci-1", "a CPU", 2, "Debian GNU/Linux 12 (bookworm)"};
+  run.selection = {{"attenuation.*"}, {"*softpipe*"}, {"vendor.txt"}};
+  run.baselineFiles = {{"caselist", "vendor.txt", "abc"}};
+  run.mutantsNotChecked = {{"shadow-fade-ignored", "none of its killers is selected"}};
+  run.shard = ShardRecord{1, 2, "digest", "test count", "", 10, 5, 9};
+  SceneBudgetRecord cut;
+  cut.scene = "per-object.eleven-lights";
+  cut.cuts = true;
+  cut.frames = {{0, 2462, 12.38, 2621.98, 1.0, std::nullopt, std::nullopt}};
+  cut.reachImage = "budgets/per-object.eleven-lights/reach.png";
+  cut.lightsNotKept = {{0, "p0", 1918, 0, 0, 1918, 1918, 0}};
+  SceneBudgetRecord failed;
+  failed.scene = "some.scene";
+  failed.error = "why";
+  run.budgets = {cut, failed};
   MutantRecord m;
   m.mutant = "unsquared-range";
   m.backend = "vulkan";
   m.status = comparison::MutantStatus::Killed;
   m.killers = {"attenuation.a"};
   m.killedBy = {"attenuation.a"};
+  m.evidence = EvidenceRecord::inFolder("mutants/unsquared-range.vulkan", 0);
+  m.evidence->test = "attenuation.a.vulkan";
   run.mutants.push_back(m);
   return run;
 }
@@ -104,10 +130,10 @@ TEST(RunRecords, SlowestAreTheTenLongestTestsLongestFirst) {
     tests[std::size_t(i)].name = "t" + std::to_string(i);
     tests[std::size_t(i)].timingsMs = StageTimes{0, 0, 0, 0, 0, double(i)};
   }
-  const Json slowest = slowestTests(tests);
+  const std::vector<SlowTest> slowest = slowestTests(tests);
   ASSERT_EQ(slowest.size(), 10u);
-  EXPECT_EQ(slowest[0]["name"], "t11");
-  EXPECT_EQ(slowest[9]["name"], "t2");
+  EXPECT_EQ(slowest[0].name, "t11");
+  EXPECT_EQ(slowest[9].name, "t2");
 }
 
 TEST(RunRecords, AFileThatIsNotResultsIsRefused) {

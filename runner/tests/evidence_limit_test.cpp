@@ -53,17 +53,17 @@ TEST_F(EvidenceLimit, RunFailuresFirstThenTheRestLoseTheirImagesButKeepTheirNumb
   EXPECT_EQ(limitEvidenceImages(tests, out_, 1), 2);
   // The first run failure keeps everything.
   EXPECT_TRUE(fs::exists(out_ / "evidence/b.fail.vulkan/result.exr"));
-  EXPECT_EQ(tests[1].evidence["viewer"], "evidence/b.fail.vulkan/viewer.html");
+  EXPECT_EQ(tests[1].evidence->viewer, "evidence/b.fail.vulkan/viewer.html");
   // The second failure and the expected failure keep summary.json alone.
   for (const std::string name : {"c.crash.vulkan", "a.expected.vulkan"}) {
     EXPECT_FALSE(fs::exists(out_ / "evidence" / name / "result.exr")) << name;
     EXPECT_FALSE(fs::exists(out_ / "evidence" / name / "viewer-data.js")) << name;
     EXPECT_TRUE(fs::exists(out_ / "evidence" / name / "summary.json")) << name;
   }
-  EXPECT_EQ(tests[2].evidence, (Json{{"frame", 2}, {"summary_json", "evidence/c.crash.vulkan/summary.json"},
-                                        {"images_kept", false}}));
-  EXPECT_EQ(tests[0].evidence["images_kept"], false);
-  EXPECT_TRUE(tests[3].evidence.is_null());
+  EXPECT_EQ(tests[2].evidence->toJson(), (Json{{"frame", 2}, {"summary_json", "evidence/c.crash.vulkan/summary.json"},
+                                                {"images_kept", false}}));
+  EXPECT_FALSE(tests[0].evidence->imagesKept);
+  EXPECT_FALSE(tests[3].evidence.has_value());
 }
 
 TEST_F(EvidenceLimit, ALimitAboveTheFailuresKeepsEverything) {
@@ -74,7 +74,7 @@ TEST_F(EvidenceLimit, ALimitAboveTheFailuresKeepsEverything) {
 
 TEST_F(EvidenceLimit, ASummaryPathOutsideTheEvidenceFolderRemovesNothing) {
   std::vector<results::TestRecord> tests = records(Json::array({record("b.fail.vulkan", "Fail")}));
-  tests[0].evidence["summary_json"] = "evidence/../summary.json";  // would name the run folder itself
+  tests[0].evidence->summaryJson = "evidence/../summary.json";  // would name the run folder itself
   std::ofstream(out_ / "results.json") << "{}";
   EXPECT_EQ(limitEvidenceImages(tests, out_, 0), 1);
   EXPECT_TRUE(fs::exists(out_ / "results.json"));

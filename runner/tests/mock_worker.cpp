@@ -73,7 +73,9 @@ void emitResult(std::size_t index, const std::string& test, comparison::Verdict 
   results::TaskResult result;
   result.test = test;
   result.rawVerdict = verdict;
-  result.metrics = {{"compared_pixels", 16}, {"failing_pixels", verdict == comparison::Verdict::Fail ? 3 : 0}};
+  result.metrics = results::Metrics{};
+  result.metrics->comparedPixels = 16;
+  result.metrics->failingPixels = verdict == comparison::Verdict::Fail ? 3 : 0;
   result.timingsMs = results::StageTimes{1.0, 1.0, 1.0, 1.0, 1.0, 5.0 + double(index)};
   Json line = {{protocol::kKind, protocol::kResult}, {protocol::kIndex, index}};
   line.update(result.toJson());

@@ -35,7 +35,8 @@ TEST_F(PartRun, EveryTaskGetsItsWorkersResultInPlanOrder) {
   script({{"devices", {{"vulkan", {{"name", "mock gpu"}}}}}});
   const PartOutcome outcome = run();
   EXPECT_EQ(outcome.status, BackendStatus::Ran);
-  EXPECT_EQ(outcome.device, Json({{"name", "mock gpu"}}));
+  ASSERT_TRUE(outcome.device.has_value());
+  EXPECT_EQ(outcome.device->name, "mock gpu");
   EXPECT_EQ(verdicts(outcome), (std::vector<Verdict>{Verdict::Pass, Verdict::Pass, Verdict::Pass}));
   EXPECT_EQ(outcome.results[1].test, "g.b.vulkan");
   ASSERT_TRUE(outcome.results[1].timingsMs.has_value());

@@ -1,0 +1,186 @@
+#include "results/outcome_records.h"
+
+#include "results/json_fields.h"
+
+namespace results {
+namespace {
+
+using namespace fields;
+
+Json channels(const std::array<Measured, 3>& values) {
+  return Json::array({measuredJson(values[0]), measuredJson(values[1]), measuredJson(values[2])});
+}
+
+std::array<Measured, 3> channelsAt(const Json& json, const char* key) {
+  std::array<Measured, 3> values;
+  const auto it = json.find(key);
+  if (it == json.end() || !it->is_array()) return values;
+  for (std::size_t c = 0; c < 3 && c < it->size(); ++c) values[c] = measured((*it)[c]);
+  return values;
+}
+
+}  // namespace
+
+Json StageTimes::toJson() const {
+  Json json = Json::object();
+  for (const auto& [field, key] : kFields) json[key] = this->*field;
+  return json;
+}
+
+std::optional<StageTimes> StageTimes::fromJson(const Json& json) {
+  if (!json.is_object()) return std::nullopt;
+  StageTimes times;
+  for (const auto& [field, key] : kFields) times.*field = number(json, key);
+  return times;
+}
+
+Json WorstPixel::toJson() const {
+  return {{"x", x},
+          {"y", y},
+          {"result", channels(result)},
+          {"reference", channels(reference)},
+          {"tolerance", channels(tolerance)},
+          {"tolerance_scale", toleranceScale}};
+}
+
+WorstPixel WorstPixel::fromJson(const Json& json) {
+  WorstPixel p;
+  p.x = integer(json, "x");
+  p.y = integer(json, "y");
+  p.result = channelsAt(json, "result");
+  p.reference = channelsAt(json, "reference");
+  p.tolerance = channelsAt(json, "tolerance");
+  p.toleranceScale = measured(json, "tolerance_scale").value_or(1.0);
+  return p;
+}
+
+Json Metrics::toJson() const {
+  Json worstPixels = Json::array();
+  for (const WorstPixel& p : worst) worstPixels.push_back(p.toJson());
+  Json json = {{"compared_pixels", comparedPixels},
+               {"masked_pixels", maskedPixels},
+               {"lit_compared_pixels", litComparedPixels},
+               {"failing_pixels", failingPixels},
+               {"non_finite_pixels", nonFinitePixels},
+               {"max_failing_pixels", maxFailingPixels},
+               {"max_abs_error", measuredJson(maxAbsError)},
+               {"rmse", measuredJson(rmse)},
+               {"tightness", measuredJson(tightness)},
+               {"tightness_is_infinite", tightnessIsInfinite},
+               {"expect_fail", expectFail},
+               {"worst", worstPixels}};
+  if (caught) {
+    json["smallest_caught_brighter"] = measuredJson(caught->brighter);
+    json["smallest_caught_darker"] = measuredJson(caught->darker);
+  }
+  return json;
+}
+
+Metrics Metrics::fromJson(const Json& json) {
+  Metrics m;
+  m.comparedPixels = integer(json, "compared_pixels");
+  m.maskedPixels = integer(json, "masked_pixels");
+  m.litComparedPixels = integer(json, "lit_compared_pixels");
+  m.failingPixels = integer(json, "failing_pixels");
+  m.nonFinitePixels = integer(json, "non_finite_pixels");
+  m.maxFailingPixels = integer(json, "max_failing_pixels");
+  m.maxAbsError = measured(json, "max_abs_error");
+  m.rmse = measured(json, "rmse");
+  m.tightness = measured(json, "tightness");
+  m.tightnessIsInfinite = boolean(json, "tightness_is_infinite");
+  m.expectFail = boolean(json, "expect_fail");
+  m.worst = objects<WorstPixel>(json, "worst", WorstPixel::fromJson);
+  if (json.contains("smallest_caught_brighter") || json.contains("smallest_caught_darker"))
+    m.caught = CaughtBrightness{measured(json, "smallest_caught_brighter"), measured(json, "smallest_caught_darker")};
+  return m;
+}
+
+Json FrameRecord::toJson() const {
+  return {{"frame", frame},
+          {"verdict", comparison::verdictName(verdict)},
+          {"failing_pixels", failingPixels},
+          {"max_abs_error", measuredJson(maxAbsError)},
+          {"tightness", measuredJson(tightness)},
+          {"ideal_error", measuredJson(idealError)},
+          {"popping_jump", measuredJson(poppingJump)}};
+}
+
+FrameRecord FrameRecord::fromJson(const Json& json) {
+  FrameRecord f;
+  f.frame = integer(json, "frame");
+  f.verdict = comparison::parseVerdict(text(json, "verdict")).value_or(comparison::Verdict::Fail);
+  f.failingPixels = integer(json, "failing_pixels");
+  f.maxAbsError = measured(json, "max_abs_error");
+  f.tightness = measured(json, "tightness");
+  f.idealError = measured(json, "ideal_error");
+  f.poppingJump = measured(json, "popping_jump");
+  return f;
+}
+
+EvidenceRecord EvidenceRecord::inFolder(const std::string& dir, long long frame) {
+  EvidenceRecord e;
+  e.frame = frame;
+  e.resultPng = dir + "/result.png";
+  e.referencePng = dir + "/reference.png";
+  e.errorMaskPng = dir + "/error-mask.png";
+  e.viewer = dir + "/viewer.html";
+  e.summaryJson = dir + "/summary.json";
+  return e;
+}
+
+Json EvidenceRecord::toJson() const {
+  Json json = {{"frame", frame}};
+  if (imagesKept) {
+    json["result_png"] = resultPng;
+    json["reference_png"] = referencePng;
+    json["error_mask_png"] = errorMaskPng;
+    json["viewer"] = viewer;
+    json["summary_json"] = summaryJson;
+  } else {
+    json["summary_json"] = summaryJson;
+    json["images_kept"] = false;
+  }
+  if (!test.empty()) json["test"] = test;
+  return json;
+}
+
+EvidenceRecord EvidenceRecord::fromJson(const Json& json) {
+  EvidenceRecord e;
+  e.frame = integer(json, "frame");
+  e.resultPng = text(json, "result_png");
+  e.referencePng = text(json, "reference_png");
+  e.errorMaskPng = text(json, "error_mask_png");
+  e.viewer = text(json, "viewer");
+  e.summaryJson = text(json, "summary_json");
+  // Only a boolean false says the images went (results.json is not trusted).
+  const auto kept = json.find("images_kept");
+  e.imagesKept = !(kept != json.end() && kept->is_boolean() && !kept->get<bool>());
+  e.test = text(json, "test");
+  return e;
+}
+
+void writeOutcome(const TaskOutcome& outcome, Json& json) {
+  json["message"] = outcome.message;
+  json["metrics"] = outcome.metrics ? outcome.metrics->toJson() : Json(nullptr);
+  if (outcome.frames) {
+    Json frames = Json::array();
+    for (const FrameRecord& f : *outcome.frames) frames.push_back(f.toJson());
+    json["frames"] = frames;
+  } else {
+    json["frames"] = nullptr;
+  }
+  json["popping_score"] = measuredJson(outcome.poppingScore);
+  json["timings_ms"] = outcome.timingsMs ? outcome.timingsMs->toJson() : Json(nullptr);
+  json["evidence"] = outcome.evidence ? outcome.evidence->toJson() : Json(nullptr);
+}
+
+void readOutcome(const Json& json, TaskOutcome& outcome) {
+  outcome.message = text(json, "message");
+  if (const Json m = carried(json, "metrics"); m.is_object()) outcome.metrics = Metrics::fromJson(m);
+  if (const Json f = carried(json, "frames"); f.is_array()) outcome.frames = objects<FrameRecord>(json, "frames", FrameRecord::fromJson);
+  outcome.poppingScore = measured(json, "popping_score");
+  outcome.timingsMs = StageTimes::fromJson(carried(json, "timings_ms"));
+  if (const Json e = carried(json, "evidence"); e.is_object()) outcome.evidence = EvidenceRecord::fromJson(e);
+}
+
+}  // namespace results
