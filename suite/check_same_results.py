@@ -18,6 +18,8 @@ import os
 import sys
 import xml.etree.ElementTree as ET
 
+import results_json
+
 # What may differ between two runs of the same tests: when and how long.
 TIMING_KEYS = {"timings_ms", "wall_s", "duration_s", "started_utc", "command", "jobs", "shard", "merged_from",
                "slowest", "time", "timestamp"}
@@ -54,8 +56,8 @@ def key_differences(a, b, path=""):
 
 
 def every_key(a, b):
-    ra = json.load(open(os.path.join(a, "results.json")))
-    rb = json.load(open(os.path.join(b, "results.json")))
+    ra = results_json.load(os.path.join(a, "results.json"))
+    rb = results_json.load(os.path.join(b, "results.json"))
     # The merge names its shards; the run it stands for has none.
     rb = {k: v for k, v in rb.items() if k != "merged_from"}
     problems = key_differences(ra, rb)
@@ -91,8 +93,8 @@ def evidence_files(run):
 
 def main(a, b):
     problems = []
-    ra = json.load(open(os.path.join(a, "results.json")))
-    rb = json.load(open(os.path.join(b, "results.json")))
+    ra = results_json.load(os.path.join(a, "results.json"))
+    rb = results_json.load(os.path.join(b, "results.json"))
     ta, tb = ra["tests"], rb["tests"]
     if [t["name"] for t in ta] != [t["name"] for t in tb]:
         problems.append(f"the tests differ or are in another order: {len(ta)} against {len(tb)}")

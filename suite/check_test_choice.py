@@ -10,10 +10,11 @@ Usage: check_test_choice.py LIGHTCTS OUT_DIR SCENES_DIR CASELIST BASELINE
 Exit 0 pass, 1 fail, 77 when Vulkan is not present (a skip)."""
 import fnmatch
 import hashlib
-import json
 import os
 import subprocess
 import sys
+
+import results_json
 
 
 def sha256(path):
@@ -34,8 +35,7 @@ def main():
     if run.returncode != 0:
         print(f"FAIL: lightcts run exited {run.returncode}")
         return 1
-    with open(os.path.join(out, "results.json")) as f:
-        results = json.load(f)
+    results = results_json.load(os.path.join(out, "results.json"))
     group = os.path.basename(os.path.normpath(scenes))
     expected = sorted(f"{group}.{name[:-5]}.vulkan" for name in os.listdir(scenes)
                       if fnmatch.fnmatchcase(name, "point-d-*.json") and name != "point-d-range.json")

@@ -17,6 +17,7 @@
 #   cmake -DLIGHTCTS=exe -DPYTHON=python3 -DCHECK=check_same_results.py -DOUT=dir -DMODE=jobs|shards|selection-shards
 #         "-DARGS=run arguments" ["-DENV=K=V;..."] -P parallel_outcome.cmake
 # A skip (exit 3: no backend present) prints NotSupported for ctest.
+include(${CMAKE_CURRENT_LIST_DIR}/results_json.cmake)
 cmake_policy(SET CMP0054 NEW)  # "shards" is a string here, not the variable below
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
@@ -104,18 +105,18 @@ same_results(--every-key ${OUT}/whole ${OUT}/merged-only-shard)
 
 # Shard 2 as if from another revision (its results.json edited).
 file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-revision)
-file(READ ${OUT}/other-revision/results.json text)
+lightcts_read_results(${OUT}/other-revision/results.json text)
 string(JSON text SET "${text}" lightcts_revision "\"0000000-not-this-one\"")
 file(WRITE ${OUT}/other-revision/results.json "${text}")
 refused_merge("different lightcts revisions" ${OUT}/shard-1 ${OUT}/other-revision ${OUT}/shard-3)
 # ... from another driver build, and over other scenes.
 file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-driver)
-file(READ ${OUT}/shard-2/results.json text)
+lightcts_read_results(${OUT}/shard-2/results.json text)
 string(JSON text SET "${text}" backends 0 device driver_version "\"99.0.0-another-build\"")
 file(WRITE ${OUT}/other-driver/results.json "${text}")
 refused_merge("different drivers on " ${OUT}/shard-1 ${OUT}/other-driver ${OUT}/shard-3)
 file(COPY ${OUT}/shard-2/ DESTINATION ${OUT}/other-scenes)
-file(READ ${OUT}/shard-2/results.json text)
+lightcts_read_results(${OUT}/shard-2/results.json text)
 string(JSON text SET "${text}" scenes_digest "\"0123\"")
 file(WRITE ${OUT}/other-scenes/results.json "${text}")
 refused_merge("different scene sets" ${OUT}/shard-1 ${OUT}/other-scenes ${OUT}/shard-3)

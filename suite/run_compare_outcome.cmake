@@ -6,6 +6,7 @@
 # EDIT: NEW is first copied to OUT/edited/results.json with that test's verdict
 # replaced, and the copy is compared. A run that could not start (no Vulkan
 # here: no results.json where EXIT is not 2) prints NotSupported for ctest.
+include(${CMAKE_CURRENT_LIST_DIR}/results_json.cmake)
 file(REMOVE_RECURSE ${OUT})
 if(NOT EXIT EQUAL 2 AND (NOT EXISTS ${OLD} OR NOT EXISTS ${NEW}))
   message("NotSupported: no backend ran, no results.json to compare")
@@ -15,7 +16,7 @@ if(EDIT)
   string(REPLACE "=" ";" parts ${EDIT})
   list(GET parts 0 name)
   list(GET parts 1 verdict)
-  file(READ ${NEW} results)
+  lightcts_read_results(${NEW} results)
   string(JSON count LENGTH "${results}" tests)
   math(EXPR last "${count} - 1")
   set(edited FALSE)

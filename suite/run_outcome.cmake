@@ -5,6 +5,7 @@
 #         ["-DVERDICTS=test=Verdict;..."] ["-DBACKENDS=suffix=status;..."]
 #         ["-DOUTPUT_REGEX=regex"] -P run_outcome.cmake
 # A skip (exit 3 where EXIT is not 3) prints NotSupported for ctest.
+include(${CMAKE_CURRENT_LIST_DIR}/results_json.cmake)
 file(REMOVE_RECURSE ${OUT})
 set(command ${LIGHTCTS} run ${ARGS} --out ${OUT})
 if(ENV)
@@ -26,7 +27,7 @@ if(NOT VERDICTS AND NOT BACKENDS)
   return()
 endif()
 
-file(READ ${OUT}/results.json results)
+lightcts_read_results(${OUT}/results.json results)
 # For each "name=wanted" in `expectations`: the entry of results[array] whose
 # `key` is name must have `field` equal to wanted.
 function(check_entries array key field expectations)

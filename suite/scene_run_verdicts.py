@@ -12,9 +12,10 @@ before it exits 3), each test and mutant NotSupported.
 
 Exit 0 when the files are written; 1 when the run left nothing to read.
 """
-import json
 import os
 import sys
+
+import results_json
 
 
 def line_of(test):
@@ -51,8 +52,7 @@ def main():
     if not os.path.exists(results_path):
         print('no results.json in %s: the run did not finish' % run_dir)
         return 1
-    with open(results_path) as f:
-        results = json.load(f)
+    results = results_json.load(results_path)
     for test in results['tests']:
         with open(os.path.join(out_dir, test['name'] + '.txt'), 'w') as f:
             f.write(line_of(test))

@@ -4,6 +4,7 @@
 # the lit one a Pass, counted so; junit.xml gives each QualityWarning as a
 # <skipped> case with its reason; the report names the verdict and the reason.
 #   cmake -DLIGHTCTS=exe -DSCENES=dir -DOUT=dir -P vacuous_outcome.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/results_json.cmake)
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${LIGHTCTS} run --backend vulkan --no-mutants --scenes ${SCENES} --out ${OUT}
                 RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -16,7 +17,7 @@ if(NOT status EQUAL 0)
   message(FATAL_ERROR "lightcts run exited ${status}, expected 0")
 endif()
 
-file(READ ${OUT}/results.json results)
+lightcts_read_results(${OUT}/results.json results)
 set(wanted "vacuous.black.vulkan=QualityWarning=no compared pixel of the reference is above the flush-to-zero floor"
            "vacuous.all-masked.vulkan=QualityWarning=only 0 of 256 pixels are compared"
            "vacuous.lit.vulkan=Pass=")
