@@ -13,46 +13,51 @@ Json lightsJson(const std::vector<BudgetLightRecord>& lights) {
   return array;
 }
 
+// A frame's numbers, in budget.json's order.
+constexpr std::pair<long long BudgetFrameRecord::*, const char*> kFrameCounts[] = {
+    {&BudgetFrameRecord::frame, "frame"}, {&BudgetFrameRecord::pixelsCut, "pixels_cut"}};
+constexpr std::pair<Measured BudgetFrameRecord::*, const char*> kFrameLosses[] = {
+    {&BudgetFrameRecord::largestLoss, "largest_loss"}, {&BudgetFrameRecord::summedLoss, "summed_loss"},
+    {&BudgetFrameRecord::largestRelativeLoss, "largest_relative_loss"},
+    {&BudgetFrameRecord::poppingScore, "popping_score"}};
+// A light's pixel counts before why it is not kept.
+constexpr std::pair<long long BudgetLightRecord::*, const char*> kLightCounts[] = {
+    {&BudgetLightRecord::reachPixels, "reach_pixels"}, {&BudgetLightRecord::keptPixels, "kept_pixels"},
+    {&BudgetLightRecord::vertexPixels, "vertex_pixels"}, {&BudgetLightRecord::notKeptPixels, "not_kept_pixels"}};
+
 }  // namespace
 
 Json BudgetLightRecord::toJson() const {
-  return {{"light", light},
-          {"name", name},
-          {"reach_pixels", reachPixels},
-          {"kept_pixels", keptPixels},
-          {"vertex_pixels", vertexPixels},
-          {"not_kept_pixels", notKeptPixels},
-          {"not_kept_because", {{"frame", cutByFrame}, {"object", cutByObject}}}};
+  Json json = {{"light", light}, {"name", name}};
+  for (const auto& [field, key] : kLightCounts) json[key] = this->*field;
+  json["not_kept_because"] = {{"frame", cutByFrame}, {"object", cutByObject}};
+  return json;
 }
 
 BudgetLightRecord BudgetLightRecord::fromJson(const Json& json) {
-  const Json because = carried(json, "not_kept_because", Json::object());
-  return {integer(json, "light"),         text(json, "name"),
-          integer(json, "reach_pixels"),  integer(json, "kept_pixels"),
-          integer(json, "vertex_pixels"), integer(json, "not_kept_pixels"),
-          because.is_object() ? integer(because, "frame") : 0,
-          because.is_object() ? integer(because, "object") : 0};
+  BudgetLightRecord l;
+  l.light = integer(json, "light");
+  l.name = text(json, "name");
+  for (const auto& [field, key] : kLightCounts) l.*field = integer(json, key);
+  if (const Json because = carried(json, "not_kept_because"); because.is_object()) {
+    l.cutByFrame = integer(because, "frame");
+    l.cutByObject = integer(because, "object");
+  }
+  return l;
 }
 
 Json BudgetFrameRecord::toJson() const {
-  Json json = {{"frame", frame},
-               {"pixels_cut", pixelsCut},
-               {"largest_loss", measuredJson(largestLoss)},
-               {"summed_loss", measuredJson(summedLoss)},
-               {"largest_relative_loss", measuredJson(largestRelativeLoss)},
-               {"popping_score", measuredJson(poppingScore)}};
+  Json json = Json::object();
+  for (const auto& [field, key] : kFrameCounts) json[key] = this->*field;
+  for (const auto& [field, key] : kFrameLosses) json[key] = measuredJson(this->*field);
   if (lights) json["lights"] = lightsJson(*lights);
   return json;
 }
 
 BudgetFrameRecord BudgetFrameRecord::fromJson(const Json& json) {
   BudgetFrameRecord f;
-  f.frame = integer(json, "frame");
-  f.pixelsCut = integer(json, "pixels_cut");
-  f.largestLoss = measured(json, "largest_loss");
-  f.summedLoss = measured(json, "summed_loss");
-  f.largestRelativeLoss = measured(json, "largest_relative_loss");
-  f.poppingScore = measured(json, "popping_score");
+  for (const auto& [field, key] : kFrameCounts) f.*field = integer(json, key);
+  for (const auto& [field, key] : kFrameLosses) f.*field = measured(json, key);
   if (json.contains("lights")) f.lights = objects<BudgetLightRecord>(json, "lights", BudgetLightRecord::fromJson);
   return f;
 }

@@ -19,6 +19,23 @@ std::array<Measured, 3> channelsAt(const Json& json, const char* key) {
   return values;
 }
 
+// Metrics' counts, then its measured errors, in results.json's order.
+constexpr std::pair<long long Metrics::*, const char*> kMetricCounts[] = {
+    {&Metrics::comparedPixels, "compared_pixels"}, {&Metrics::maskedPixels, "masked_pixels"},
+    {&Metrics::litComparedPixels, "lit_compared_pixels"}, {&Metrics::failingPixels, "failing_pixels"},
+    {&Metrics::nonFinitePixels, "non_finite_pixels"}, {&Metrics::maxFailingPixels, "max_failing_pixels"}};
+constexpr std::pair<Measured Metrics::*, const char*> kMetricErrors[] = {
+    {&Metrics::maxAbsError, "max_abs_error"}, {&Metrics::rmse, "rmse"}, {&Metrics::tightness, "tightness"}};
+// A frame's errors after its failing pixels.
+constexpr std::pair<Measured FrameRecord::*, const char*> kFrameErrors[] = {
+    {&FrameRecord::maxAbsError, "max_abs_error"}, {&FrameRecord::tightness, "tightness"},
+    {&FrameRecord::idealError, "ideal_error"}, {&FrameRecord::poppingJump, "popping_jump"}};
+// Evidence's files, in results.json's order.
+constexpr std::pair<std::string EvidenceRecord::*, const char*> kEvidenceFiles[] = {
+    {&EvidenceRecord::resultPng, "result_png"}, {&EvidenceRecord::referencePng, "reference_png"},
+    {&EvidenceRecord::errorMaskPng, "error_mask_png"}, {&EvidenceRecord::viewer, "viewer"},
+    {&EvidenceRecord::summaryJson, "summary_json"}};
+
 }  // namespace
 
 Json StageTimes::toJson() const {
@@ -57,18 +74,12 @@ WorstPixel WorstPixel::fromJson(const Json& json) {
 Json Metrics::toJson() const {
   Json worstPixels = Json::array();
   for (const WorstPixel& p : worst) worstPixels.push_back(p.toJson());
-  Json json = {{"compared_pixels", comparedPixels},
-               {"masked_pixels", maskedPixels},
-               {"lit_compared_pixels", litComparedPixels},
-               {"failing_pixels", failingPixels},
-               {"non_finite_pixels", nonFinitePixels},
-               {"max_failing_pixels", maxFailingPixels},
-               {"max_abs_error", measuredJson(maxAbsError)},
-               {"rmse", measuredJson(rmse)},
-               {"tightness", measuredJson(tightness)},
-               {"tightness_is_infinite", tightnessIsInfinite},
-               {"expect_fail", expectFail},
-               {"worst", worstPixels}};
+  Json json = Json::object();
+  for (const auto& [field, key] : kMetricCounts) json[key] = this->*field;
+  for (const auto& [field, key] : kMetricErrors) json[key] = measuredJson(this->*field);
+  json["tightness_is_infinite"] = tightnessIsInfinite;
+  json["expect_fail"] = expectFail;
+  json["worst"] = worstPixels;
   if (caught) {
     json["smallest_caught_brighter"] = measuredJson(caught->brighter);
     json["smallest_caught_darker"] = measuredJson(caught->darker);
@@ -78,15 +89,8 @@ Json Metrics::toJson() const {
 
 Metrics Metrics::fromJson(const Json& json) {
   Metrics m;
-  m.comparedPixels = integer(json, "compared_pixels");
-  m.maskedPixels = integer(json, "masked_pixels");
-  m.litComparedPixels = integer(json, "lit_compared_pixels");
-  m.failingPixels = integer(json, "failing_pixels");
-  m.nonFinitePixels = integer(json, "non_finite_pixels");
-  m.maxFailingPixels = integer(json, "max_failing_pixels");
-  m.maxAbsError = measured(json, "max_abs_error");
-  m.rmse = measured(json, "rmse");
-  m.tightness = measured(json, "tightness");
+  for (const auto& [field, key] : kMetricCounts) m.*field = integer(json, key);
+  for (const auto& [field, key] : kMetricErrors) m.*field = measured(json, key);
   m.tightnessIsInfinite = boolean(json, "tightness_is_infinite");
   m.expectFail = boolean(json, "expect_fail");
   m.worst = objects<WorstPixel>(json, "worst", WorstPixel::fromJson);
@@ -96,13 +100,9 @@ Metrics Metrics::fromJson(const Json& json) {
 }
 
 Json FrameRecord::toJson() const {
-  return {{"frame", frame},
-          {"verdict", comparison::verdictName(verdict)},
-          {"failing_pixels", failingPixels},
-          {"max_abs_error", measuredJson(maxAbsError)},
-          {"tightness", measuredJson(tightness)},
-          {"ideal_error", measuredJson(idealError)},
-          {"popping_jump", measuredJson(poppingJump)}};
+  Json json = {{"frame", frame}, {"verdict", comparison::verdictName(verdict)}, {"failing_pixels", failingPixels}};
+  for (const auto& [field, key] : kFrameErrors) json[key] = measuredJson(this->*field);
+  return json;
 }
 
 FrameRecord FrameRecord::fromJson(const Json& json) {
@@ -110,10 +110,7 @@ FrameRecord FrameRecord::fromJson(const Json& json) {
   f.frame = integer(json, "frame");
   f.verdict = comparison::parseVerdict(text(json, "verdict")).value_or(comparison::Verdict::Fail);
   f.failingPixels = integer(json, "failing_pixels");
-  f.maxAbsError = measured(json, "max_abs_error");
-  f.tightness = measured(json, "tightness");
-  f.idealError = measured(json, "ideal_error");
-  f.poppingJump = measured(json, "popping_jump");
+  for (const auto& [field, key] : kFrameErrors) f.*field = measured(json, key);
   return f;
 }
 
@@ -131,11 +128,7 @@ EvidenceRecord EvidenceRecord::inFolder(const std::string& dir, long long frame)
 Json EvidenceRecord::toJson() const {
   Json json = {{"frame", frame}};
   if (imagesKept) {
-    json["result_png"] = resultPng;
-    json["reference_png"] = referencePng;
-    json["error_mask_png"] = errorMaskPng;
-    json["viewer"] = viewer;
-    json["summary_json"] = summaryJson;
+    for (const auto& [field, key] : kEvidenceFiles) json[key] = this->*field;
   } else {
     json["summary_json"] = summaryJson;
     json["images_kept"] = false;
@@ -147,11 +140,7 @@ Json EvidenceRecord::toJson() const {
 EvidenceRecord EvidenceRecord::fromJson(const Json& json) {
   EvidenceRecord e;
   e.frame = integer(json, "frame");
-  e.resultPng = text(json, "result_png");
-  e.referencePng = text(json, "reference_png");
-  e.errorMaskPng = text(json, "error_mask_png");
-  e.viewer = text(json, "viewer");
-  e.summaryJson = text(json, "summary_json");
+  for (const auto& [field, key] : kEvidenceFiles) e.*field = text(json, key);
   // Only a boolean false says the images went (results.json is not trusted).
   const auto kept = json.find("images_kept");
   e.imagesKept = !(kept != json.end() && kept->is_boolean() && !kept->get<bool>());
