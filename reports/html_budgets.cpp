@@ -65,7 +65,8 @@ void sceneWithCuts(std::ostream& out, const Page& page, const results::SceneBudg
 void budgetSections(std::ostream& out, const Page& page) {
   out << "<h2 id=\"budgets\">Light budgets</h2>\n";
   if (page.run.budgets.empty()) {
-    out << "<p>No light budgets in this run (<code>--no-budgets</code>, or a run of mutants only).</p>\n";
+    out << "<p>No light budgets in this run (<code>--no-budgets</code>, a run of mutants only, or a run "
+           "interrupted before them).</p>\n";
     return;
   }
   out << "<p>Where the budgets of SPEC 4-5.2 drop light, on the reference's visible surface (SPEC 5.5): "

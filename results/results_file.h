@@ -6,8 +6,9 @@
 // Refused: a file that cannot be read, is not JSON, is not a lightcts
 // results.json ("format"), or lacks a key every results.json has had since
 // version 1: "tests" and "backends" (arrays of objects), each test's "name",
-// "backend" and "verdict", each backend's "backend" and "status". The
-// message names the key as a JSON path (`tests[3].name`). Tolerated, as
+// "backend" and "verdict", each backend's "backend" and "status"; and a
+// record of "mutants", "admissible" or a test's "attempts" that is no
+// object. The message names the key as a JSON path (`tests[3].name`). Tolerated, as
 // docs/results-format.md promises: the keys later versions added (missing:
 // their defaults), a word no verdict or status has (read as what
 // RunRecord::fromJson makes of it), and keys lightcts does not know.

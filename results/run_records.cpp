@@ -21,7 +21,8 @@ Verdict verdictAt(const Json& json, const char* key, std::string* unknownWord = 
 }
 
 const Json& objectAt(const Json& array, std::size_t i, const char* what) {
-  if (!array[i].is_object()) throw std::invalid_argument(std::string("a record of \"") + what + "\" is not an object");
+  if (!array[i].is_object())
+    throw std::invalid_argument(std::string(what) + "[" + std::to_string(i) + "] is not an object");
   return array[i];
 }
 

@@ -76,7 +76,7 @@ struct TestRecord : TaskOutcome {
 };
 
 // A backend's mutation check in three buckets: "other" holds the statuses
-// that prove nothing (NotSupported, Crash, Timeout).
+// that prove nothing (NotSupported, Crash, Timeout, NotRun).
 struct MutantCounts {
   int killed = 0;
   int survived = 0;

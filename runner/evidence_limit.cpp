@@ -27,7 +27,12 @@ long long limitEvidenceImages(std::vector<results::TestRecord>& tests, const std
       for (const fs::directory_entry& entry : fs::directory_iterator(folder, ignored))
         if (entry.path().filename() != "summary.json") images.push_back(entry.path());
     for (const fs::path& image : images) fs::remove_all(image, ignored);
-    evidence.imagesKept = false;
+    results::EvidenceRecord numbersOnly;  // its images are gone: nothing may link to them
+    numbersOnly.frame = evidence.frame;
+    numbersOnly.summaryJson = summary;
+    numbersOnly.imagesKept = false;
+    numbersOnly.test = evidence.test;
+    evidence = numbersOnly;
     ++dropped;
   }
   return dropped;

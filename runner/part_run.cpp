@@ -81,7 +81,11 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
     bool gotResult = false;  // this worker reported at least one test
     bool backendUp = false;  // this worker said "device": its backend was created
     for (;;) {
-      const auto status = worker.readLine(timeout, line);
+      auto status = worker.readLine(timeout, line);
+      // A worker that ended or went quiet with the signal (the same signal
+      // may reach it: `pkill`, a container's stop) did not crash: NotRun.
+      if (status != WorkerProcess::ReadStatus::Line && interruptingSignal() != 0)
+        status = WorkerProcess::ReadStatus::Interrupted;
       if (status == WorkerProcess::ReadStatus::Interrupted) {
         worker.finish(true);
         recordNotRun(next);

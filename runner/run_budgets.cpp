@@ -4,6 +4,7 @@
 #include "reference/light_budget.h"
 #include "reports/budget_maps.h"
 #include "runner/budget_files.h"
+#include "runner/run_interruption.h"
 #include "scene_input/scene_loader.h"
 
 #include <optional>
@@ -64,6 +65,7 @@ results::SceneBudgetRecord sceneBudget(const BudgetScene& scene, const fs::path&
 std::vector<results::SceneBudgetRecord> runBudgets(const std::vector<BudgetScene>& scenes, const fs::path& outDir) {
   std::vector<results::SceneBudgetRecord> budgets;
   for (const BudgetScene& scene : scenes) {
+    if (interruptingSignal() != 0) break;  // an interrupted run computes no more
     try {
       budgets.push_back(sceneBudget(scene, outDir));
     } catch (const std::exception& e) {

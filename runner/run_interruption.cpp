@@ -4,12 +4,14 @@
 
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
+#include <utility>
 
 namespace runner {
 namespace {
@@ -20,14 +22,15 @@ std::atomic<int> interruptingSignal_{0};
 std::atomic<bool> guarded_{false};
 int wakeRead_ = -1;
 int wakeWrite_ = -1;
-// More than any --jobs needs: one worker per thread at a time.
-std::array<std::atomic<int>, 256> workerGroups_{};
+// One worker per thread at a time: room for --jobs up to this many.
+std::array<std::atomic<int>, 4096> workerGroups_{};
 struct sigaction previousInt_ {};
 struct sigaction previousTerm_ {};
 
 void say(const char* text) { [[maybe_unused]] const ssize_t n = write(STDERR_FILENO, text, std::strlen(text)); }
 
 extern "C" void onInterrupt(int signal) {
+  const int savedErrno = errno;  // the thread the signal broke in may be about to read errno
   int none = 0;
   if (interruptingSignal_.compare_exchange_strong(none, signal)) {
     say(signal == SIGINT ? "\nlightcts: run: SIGINT: stopping the workers and writing the finished tests' results "
@@ -36,6 +39,7 @@ extern "C" void onInterrupt(int signal) {
                            "(a second signal ends at once)\n");
     const char byte = 1;
     [[maybe_unused]] const ssize_t n = write(wakeWrite_, &byte, 1);
+    errno = savedErrno;
     return;
   }
   for (std::atomic<int>& group : workerGroups_)
@@ -60,8 +64,12 @@ InterruptionGuard::InterruptionGuard() {
   action.sa_handler = onInterrupt;
   sigemptyset(&action.sa_mask);
   action.sa_flags = 0;  // no SA_RESTART: a wait the signal breaks returns EINTR and looks again
-  sigaction(SIGINT, &action, &previousInt_);
-  sigaction(SIGTERM, &action, &previousTerm_);
+  // A signal the run was started ignoring (`lightcts run &` from a script
+  // ignores SIGINT) stays ignored: whoever started it chose so.
+  for (const auto& [signal, previous] : {std::pair{SIGINT, &previousInt_}, std::pair{SIGTERM, &previousTerm_}}) {
+    sigaction(signal, nullptr, previous);
+    if (previous->sa_handler != SIG_IGN) sigaction(signal, &action, nullptr);
+  }
 }
 
 InterruptionGuard::~InterruptionGuard() {

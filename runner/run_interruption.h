@@ -9,8 +9,9 @@
 
 namespace runner {
 
-// While one lives, SIGINT and SIGTERM are the run's; the handlers before it
-// come back when it goes. One at a time: a second throws std::logic_error.
+// While one lives, SIGINT and SIGTERM are the run's (unless the process was
+// started ignoring one: it stays ignored); the handlers before it come back
+// when it goes. One at a time: a second throws std::logic_error.
 class InterruptionGuard {
  public:
   InterruptionGuard();

@@ -40,8 +40,11 @@ Timings loadTimings(const std::string& resultsFile) {
     throw std::invalid_argument(std::string("--timings ") + e.what());
   }
   Timings timings;
+  // A test without a total (a crash, or a file without one) is one the
+  // timings do not know: it costs the mean of the others (unitCosts).
   for (const results::TestRecord& test : run.tests)
-    if (test.timingsMs) timings[test.name] = {test.timingsMs->total, test.timingsMs->reference};
+    if (test.timingsMs && test.timingsMs->total > 0)
+      timings[test.name] = {test.timingsMs->total, test.timingsMs->reference};
   return timings;
 }
 

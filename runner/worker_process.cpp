@@ -60,30 +60,32 @@ WorkerProcess::~WorkerProcess() {
 }
 
 WorkerProcess::ReadStatus WorkerProcess::readLine(std::chrono::milliseconds timeout, std::string& line) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  auto deadline = std::chrono::steady_clock::now() + timeout;
   for (;;) {
     if (const auto newline = buffer_.find('\n'); newline != std::string::npos) {
       line = buffer_.substr(0, newline);
       buffer_.erase(0, newline + 1);
       return ReadStatus::Line;
     }
-    if (fd_ < 0) return ReadStatus::Closed;
-    // Interrupted, the lines already written are still read (a result that
-    // arrived with the signal is kept), without waiting for more.
-    const bool interrupted = interruptingSignal() != 0;
+    if (fd_ < 0) return interrupted_ ? ReadStatus::Interrupted : ReadStatus::Closed;
+    // Interrupted: the worker's group is killed at once, and what it wrote
+    // before is still read (a result that arrived with the signal is kept),
+    // up to its end of output, which the kill brings within a moment.
+    if (!interrupted_ && interruptingSignal() != 0) {
+      interrupted_ = true;
+      if (pid_ > 0) ::kill(-pid_, SIGKILL);
+      deadline = std::chrono::steady_clock::now() + kDrainAfterInterruption;
+    }
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (!interrupted && left.count() <= 0) return ReadStatus::TimedOut;
+    if (left.count() <= 0) return interrupted_ ? ReadStatus::Interrupted : ReadStatus::TimedOut;
     // The interruption's descriptor (-1 without a guard, which poll skips)
     // wakes every thread that waits on a worker.
-    pollfd p[2] = {{fd_, POLLIN, 0}, {interrupted ? -1 : interruptionDescriptor(), POLLIN, 0}};
-    const int ready = poll(p, 2, interrupted ? 0 : int(left.count()));
+    pollfd p[2] = {{fd_, POLLIN, 0}, {interrupted_ ? -1 : interruptionDescriptor(), POLLIN, 0}};
+    const int ready = poll(p, 2, int(left.count()));
     if (ready < 0 && errno == EINTR) continue;
     if (ready < 0) throw std::runtime_error(systemError("cannot wait for a worker"));
-    if (p[0].revents == 0) {
-      if (interrupted) return ReadStatus::Interrupted;
-      if (ready == 0) return ReadStatus::TimedOut;
-      continue;  // the interruption woke it: said on the next turn, after what has arrived
-    }
+    if (ready == 0) return interrupted_ ? ReadStatus::Interrupted : ReadStatus::TimedOut;
+    if (p[0].revents == 0) continue;  // the interruption woke it: the next turn kills the worker
     char chunk[65536];
     const ssize_t n = read(fd_, chunk, sizeof chunk);
     if (n < 0 && errno == EINTR) continue;
@@ -96,7 +98,7 @@ WorkerProcess::ReadStatus WorkerProcess::readLine(std::chrono::milliseconds time
         buffer_.clear();
         return ReadStatus::Line;
       }
-      return ReadStatus::Closed;
+      return interrupted_ ? ReadStatus::Interrupted : ReadStatus::Closed;
     }
     buffer_.append(chunk, std::size_t(n));
   }
@@ -107,10 +109,12 @@ std::string WorkerProcess::finish(bool kill) {
   // The whole group: a timed-out worker's own children (a driver's helper
   // processes, a shell) must not outlive it.
   if (kill) ::kill(-pid_, SIGKILL);
+  // Forgotten before it is reaped: until then its pid cannot name another
+  // process, which a second signal would kill.
+  removeWorkerGroup(pid_);
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
-  removeWorkerGroup(pid_);
   pid_ = -1;
   if (WIFEXITED(status)) {
     exitStatus_ = WEXITSTATUS(status);

@@ -24,7 +24,8 @@ class WorkerProcess {
   enum class ReadStatus { Line, Closed, TimedOut, Interrupted };
   // The next line (without '\n') within `timeout`; Closed when the child
   // closed its output (it exited or died); Interrupted once the run is
-  // (runner/run_interruption.h), after every whole line that had arrived.
+  // (runner/run_interruption.h): the child is killed then, and every whole
+  // line it had written is still returned first.
   ReadStatus readLine(std::chrono::milliseconds timeout, std::string& line);
 
   // Waits for the child to end and describes how: "exit status N" or
@@ -37,7 +38,11 @@ class WorkerProcess {
   int pid_ = -1;
   int fd_ = -1;
   int exitStatus_ = -1;
+  bool interrupted_ = false;  // the run was interrupted and the worker killed
   std::string buffer_;
+  // How long what an interrupted worker wrote is still read: its group is
+  // killed first, so its output ends at once unless a process left the group.
+  static constexpr std::chrono::milliseconds kDrainAfterInterruption{2000};
 };
 
 }  // namespace runner

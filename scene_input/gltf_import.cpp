@@ -449,6 +449,8 @@ GltfContent importGltf(const GltfImportRequest& request) {
     if (!glb) content.jsonText = text;
     return content;
   } catch (const GltfError& error) {
+    // A .glb's JSON is a chunk of a binary file: no line and column of it.
+    if (glb && error.where().line != 0) throw GltfError(error.file(), error.pointer(), error.message());
     // The checks name a JSON pointer; its line and column come from the text parsed here.
     if (glb || error.where().line != 0 || error.pointer().empty()) throw;
     throw GltfError(error.file(), error.pointer(), error.message(),

@@ -393,6 +393,8 @@ class SceneReader {
     }
     std::optional<LightDefaults> defaults;
     if (auto defaultsNode = member(node, "light_defaults")) {
+      expectObject(*defaultsNode);
+      checkKeys(*defaultsNode, kLightDefaultsKeys);
       if (!takeLights)
         failOnKey(*defaultsNode, "light_defaults sets the imported file's lights, and this import takes none");
       defaults = readLightDefaults(*defaultsNode);
@@ -419,13 +421,11 @@ class SceneReader {
     return m;
   }
 
-  // light_defaults, read once, whether or not the file has lights (a value
+  // light_defaults (an object of its keys), read once, whether or not the file has lights (a value
   // out of range is an error even where nothing takes it). A cookie and a
   // shadow map depend on the light's type: read with each light, as a scene
   // light's keys would be.
   LightDefaults readLightDefaults(const Node& node) const {
-    expectObject(node);
-    checkKeys(node, kLightDefaultsKeys);
     LightDefaults defaults;
     if (auto range = member(node, "range")) defaults.range = readNumber(*range, above(0));
     if (auto mode = member(node, "mode")) defaults.mode = readChoice(*mode, kLightModes);

@@ -63,6 +63,9 @@ TEST_F(EvidenceLimit, RunFailuresFirstThenTheRestLoseTheirImagesButKeepTheirNumb
   EXPECT_EQ(tests[2].evidence->toJson(), (Json{{"frame", 2}, {"summary_json", "evidence/c.crash.vulkan/summary.json"},
                                                 {"images_kept", false}}));
   EXPECT_FALSE(tests[0].evidence->imagesKept);
+  // Nothing of the record links to an image that went (the reports read the record itself).
+  EXPECT_TRUE(tests[2].evidence->viewer.empty());
+  EXPECT_TRUE(tests[2].evidence->errorMaskPng.empty());
   EXPECT_FALSE(tests[3].evidence.has_value());
 }
 

@@ -12,7 +12,9 @@
 // Events: "pass" | "fail" | "crash" (SIGKILL) | "hang" | "garbage" (lines
 // that are no protocol object, then a pass) | "pass-then-exit-4" (a driver
 // error after the result) | "backend-error" | "interrupt:SIGINT" |
-// "interrupt:SIGTERM" (signals the runner, then hangs).
+// "interrupt:SIGTERM" (signals the runner, then hangs) | "interrupt-and-die:SIGINT"
+// (signals the runner, then dies of SIGKILL) | "interrupt-and-chatter:SIGINT"
+// (signals the runner, then writes lines without end).
 // Each attempt is counted in <plan outDir>/mock-attempts.txt, each worker
 // start in mock-starts.txt.
 #include "app/exit_status.h"
@@ -122,6 +124,14 @@ int main(int argc, char** argv) {
     if (event.starts_with("interrupt:")) {
       kill(getppid(), signalOf(event));
       hang();
+    }
+    if (event.starts_with("interrupt-and-die:")) {  // the same signal reaches the worker
+      kill(getppid(), signalOf(event));
+      crash();
+    }
+    if (event.starts_with("interrupt-and-chatter:")) {  // a worker that never stops writing
+      kill(getppid(), signalOf(event));
+      for (;;) std::cout << "a driver's line\n" << std::flush;
     }
     if (event == "backend-error") {
       emit({{protocol::kKind, protocol::kBackendError}, {protocol::kMessage, "mock: the driver broke"}});

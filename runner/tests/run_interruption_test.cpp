@@ -49,6 +49,20 @@ TEST(RunInterruption, TheGuardGivesTheSignalsBackAndForgetsTheInterruption) {
   EXPECT_EQ(interruptionDescriptor(), -1);
 }
 
+// `lightcts run &` from a script starts ignoring SIGINT: it stays ignored.
+TEST(RunInterruption, ASignalIgnoredAtTheStartStaysIgnored) {
+  struct sigaction ignore {}, before {};
+  ignore.sa_handler = SIG_IGN;
+  sigemptyset(&ignore.sa_mask);
+  sigaction(SIGINT, &ignore, &before);
+  {
+    const InterruptionGuard guard;
+    std::raise(SIGINT);
+    EXPECT_EQ(interruptingSignal(), 0);
+  }
+  sigaction(SIGINT, &before, nullptr);
+}
+
 TEST(RunInterruption, ASecondSignalKillsTheWorkersAndEndsTheProcessAtOnce) {
   const std::string pidFile = ::testing::TempDir() + "lightcts-interruption-" + std::to_string(getpid());
   std::remove(pidFile.c_str());

@@ -103,6 +103,17 @@ TEST_F(SuiteRun, SigintExitsWith130) {
   EXPECT_EQ(verdicts(results("out"))["attenuation.point-d-zero.vulkan"], "NotRun");
 }
 
+// A worker the signal reaches too, or one that never stops writing, is
+// stopped with the run and its test is NotRun, not a Crash.
+TEST_F(SuiteRun, AWorkerThatDiesOrChattersWithTheSignalLeavesItsTestNotRun) {
+  for (const char* event : {"interrupt-and-die:SIGTERM", "interrupt-and-chatter:SIGTERM"}) {
+    script({{"tests", {{"attenuation.point-d-range.vulkan", {event}}}}});
+    EXPECT_EQ(run(options("out")), 128 + SIGTERM) << event;
+    EXPECT_EQ(verdicts(results("out"))["attenuation.point-d-range.vulkan"], "NotRun") << event;
+    EXPECT_EQ(verdicts(results("out"))["attenuation.point-d-half-range.vulkan"], "Pass") << event;
+  }
+}
+
 TEST_F(SuiteRun, ShardsMergeIntoTheWholeRunAndTheMergeRefusesAShardTwice) {
   script(Json::object());
   RunOptions first = options("shard-1"), second = options("shard-2");
