@@ -7,6 +7,7 @@
 #include "runner/worker_process.h"
 #include "runner/worker_protocol.h"
 
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -18,6 +19,11 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using comparison::BackendStatus;
 using comparison::Verdict;
+
+// How long a worker's end by SIGINT or SIGTERM waits for the same signal to
+// reach the run: far longer than a signal takes, and paid only by a worker
+// someone else signalled.
+constexpr std::chrono::milliseconds kSignalGrace{1000};
 
 std::string lastLines(const fs::path& file, int count) {
   std::ifstream in(file);
@@ -82,9 +88,14 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
     bool backendUp = false;  // this worker said "device": its backend was created
     for (;;) {
       auto status = worker.readLine(timeout, line);
-      // A worker that ended or went quiet with the signal (the same signal
-      // may reach it: `pkill`, a container's stop) did not crash: NotRun.
-      if (status != WorkerProcess::ReadStatus::Line && interruptingSignal() != 0)
+      std::string endedHow;
+      if (status == WorkerProcess::ReadStatus::Closed) endedHow = worker.finish(false);
+      // A worker that ended or went quiet with the run's signal did not
+      // crash: NotRun. One that SIGINT or SIGTERM ended was likely sent it
+      // with the run, which may not have taken it yet.
+      const int endedBy = worker.endingSignal();
+      const auto grace = endedBy == SIGINT || endedBy == SIGTERM ? kSignalGrace : std::chrono::milliseconds(0);
+      if (status != WorkerProcess::ReadStatus::Line && runInterrupted(grace))
         status = WorkerProcess::ReadStatus::Interrupted;
       if (status == WorkerProcess::ReadStatus::Interrupted) {
         worker.finish(true);
@@ -94,7 +105,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
       }
       if (status != WorkerProcess::ReadStatus::Line && !backendUp) {
         const bool hung = status == WorkerProcess::ReadStatus::TimedOut;
-        const std::string how = worker.finish(hung);
+        const std::string how = hung ? worker.finish(true) : endedHow;
         outcome.status = BackendStatus::Error;
         outcome.message = std::string(hung ? "the backend did not start within the timeout" : "the worker ended") +
                           " before its backend was up (" + how + "); its last output:\n" + lastLines(logFile, 8);
@@ -114,7 +125,7 @@ PartOutcome runPart(const WorkerPlan& plan, const std::string& workerExecutable,
         break;
       }
       if (status == WorkerProcess::ReadStatus::Closed) {
-        const std::string how = worker.finish(false);
+        const std::string& how = endedHow;
         // An internal error after a test's result: the worker reported a driver
         // error and quit, so that a new one starts on a fresh device. No test is lost.
         if (worker.exitStatus() == app::kExitInternalError && gotResult) break;

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <poll.h>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -83,6 +84,18 @@ InterruptionGuard::~InterruptionGuard() {
 }
 
 int interruptingSignal() { return interruptingSignal_.load(); }
+
+bool runInterrupted(std::chrono::milliseconds grace) {
+  if (interruptingSignal() != 0 || !guarded_ || grace.count() <= 0) return interruptingSignal() != 0;
+  const auto deadline = std::chrono::steady_clock::now() + grace;
+  for (;;) {  // the wake pipe turns readable when the handler has run
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    pollfd wake{wakeRead_, POLLIN, 0};
+    if (left.count() <= 0 || poll(&wake, 1, int(left.count())) >= 0 || errno != EINTR)
+      return interruptingSignal() != 0;
+  }
+}
 
 int interruptionDescriptor() { return wakeRead_; }
 

@@ -7,6 +7,8 @@
 // once, killing the workers first and writing nothing more.
 #pragma once
 
+#include <chrono>
+
 namespace runner {
 
 // While one lives, SIGINT and SIGTERM are the run's (unless the process was
@@ -22,6 +24,10 @@ class InterruptionGuard {
 
 // The signal that interrupted the run; 0 while none has (or without a guard).
 int interruptingSignal();
+// Whether the run is interrupted, waiting up to `grace` for a signal to
+// reach it: a worker that SIGINT or SIGTERM ended was likely sent it with
+// the run (`pkill`, a container's stop), and can be seen to end first.
+bool runInterrupted(std::chrono::milliseconds grace = std::chrono::milliseconds(0));
 // Readable once the run is interrupted, and from then on: what a thread
 // waiting on a worker's output polls beside it. -1 without a guard.
 int interruptionDescriptor();

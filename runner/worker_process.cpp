@@ -122,6 +122,7 @@ std::string WorkerProcess::finish(bool kill) {
   }
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
+    endingSignal_ = sig;
     const char* name = sigabbrev_np(sig);
     return std::string("killed by signal ") + (name ? std::string("SIG") + name : "?") + " (" + std::to_string(sig) +
            ")";

@@ -33,11 +33,13 @@ class WorkerProcess {
   // group, when `kill` is true.
   std::string finish(bool kill);
   int exitStatus() const { return exitStatus_; }  // after finish(); -1 when killed by a signal
+  int endingSignal() const { return endingSignal_; }  // after finish(): the signal that ended it, or 0
 
  private:
   int pid_ = -1;
   int fd_ = -1;
   int exitStatus_ = -1;
+  int endingSignal_ = 0;
   bool interrupted_ = false;  // the run was interrupted and the worker killed
   std::string buffer_;
   // How long what an interrupted worker wrote is still read: its group is

@@ -13,8 +13,9 @@
 // that are no protocol object, then a pass) | "pass-then-exit-4" (a driver
 // error after the result) | "backend-error" | "interrupt:SIGINT" |
 // "interrupt:SIGTERM" (signals the runner, then hangs) | "interrupt-and-die:SIGINT"
-// (signals the runner, then dies of SIGKILL) | "interrupt-and-chatter:SIGINT"
-// (signals the runner, then writes lines without end).
+// (signals the runner, then dies of that signal) | "interrupt-and-chatter:SIGINT"
+// (signals the runner, then writes lines without end) | "signalled:SIGTERM"
+// (dies of that signal, the runner not signalled).
 // Each attempt is counted in <plan outDir>/mock-attempts.txt, each worker
 // start in mock-starts.txt.
 #include "app/exit_status.h"
@@ -125,9 +126,16 @@ int main(int argc, char** argv) {
       kill(getppid(), signalOf(event));
       hang();
     }
-    if (event.starts_with("interrupt-and-die:")) {  // the same signal reaches the worker
+    if (event.starts_with("interrupt-and-die:")) {  // the same signal reaches the worker, and ends it
       kill(getppid(), signalOf(event));
-      crash();
+      signal(signalOf(event), SIG_DFL);
+      std::raise(signalOf(event));
+      hang();
+    }
+    if (event.starts_with("signalled:")) {  // ended by a signal someone sent the worker alone
+      signal(signalOf(event), SIG_DFL);
+      std::raise(signalOf(event));
+      hang();
     }
     if (event.starts_with("interrupt-and-chatter:")) {  // a worker that never stops writing
       kill(getppid(), signalOf(event));

@@ -114,6 +114,18 @@ TEST_F(SuiteRun, AWorkerThatDiesOrChattersWithTheSignalLeavesItsTestNotRun) {
   }
 }
 
+// A worker someone sent SIGTERM alone crashed: the run, not interrupted,
+// goes on (after a moment's wait for a signal that does not come).
+TEST_F(SuiteRun, AWorkerSignalledAloneIsACrashAndTheRunGoesOn) {
+  script({{"tests", {{"attenuation.point-d-half-range.vulkan", {"signalled:SIGTERM"}}}}});
+  RunOptions o = options("out");
+  o.flakeRetries = 0;
+  EXPECT_EQ(run(o), 1);
+  const auto v = verdicts(results("out"));
+  EXPECT_EQ(v.at("attenuation.point-d-half-range.vulkan"), "Crash");
+  EXPECT_EQ(v.at("attenuation.point-d-zero.vulkan"), "Pass");
+}
+
 TEST_F(SuiteRun, ShardsMergeIntoTheWholeRunAndTheMergeRefusesAShardTwice) {
   script(Json::object());
   RunOptions first = options("shard-1"), second = options("shard-2");
