@@ -7,7 +7,6 @@
 #include "reports/run_compare.h"
 #include "results/results_file.h"
 
-#include <fstream>
 #include <ostream>
 #include <stdexcept>
 

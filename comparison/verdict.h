@@ -43,8 +43,8 @@ enum class CiOutcome { Pass, Failure, Error, Skipped };
 CiOutcome ciOutcome(Verdict verdict);
 
 // Whether the HTML report gives the test a section with its evidence: every
-// run failure, and the passes a person should still look at (QualityWarning,
-// Flake).
+// run failure but NotRun (which has none), and the passes a person should
+// still look at (QualityWarning, Flake).
 bool needsAttention(Verdict verdict);
 
 // The raw verdicts an expected-failures line may name (the failing verdicts

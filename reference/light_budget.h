@@ -10,16 +10,9 @@
 #include "reference/reference_renderer.h"
 
 #include <cstdint>
-#include <string_view>
 #include <vector>
 
 namespace reference {
-
-// Why a light that reaches a pixel is not evaluated there.
-enum class BudgetCut {
-  Frame,   // SPEC 5.1: cut from the frame's kept set (4 directional, 64 others, 16 legacy)
-  Object,  // SPEC 5.2: kept by the frame, not in the object's list (its 8)
-};
 
 struct LightBudgetOfLight {
   int light = 0;                    // index in the scene's lights

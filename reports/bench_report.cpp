@@ -12,6 +12,7 @@
 #include "reports/html_sections.h"
 #include "reports/json_fields.h"
 #include "reports/result_fields.h"
+#include "results/run_records.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,17 +73,17 @@ void peakDriftWarning(std::ostream& out, const Json& bench) {
 
 void runMeta(std::ostream& out, const BenchModel& m) {
   const Json& b = m.bench;
-  const Json& machine = objectField(b, "machine");
+  const results::MachineRecord machine = results::MachineRecord::fromJson(objectField(b, "machine"));
   const Json& peak = objectField(b, "peak");
   out << "<h2 id=\"run\">Run</h2>\n<dl class=\"meta\">\n";
   metaRow(out, "revision", textField(b, "lightcts_revision"));
   metaRow(out, "started (UTC)", textField(b, "started_utc"));
   if (const auto d = numberField(b, "duration_s")) metaRow(out, "duration", formatSeconds(*d) + " s");
   metaRow(out, "command", textField(b, "command"));
-  metaRow(out, "machine", textField(machine, "hostname"));
-  metaRow(out, "cpu", textField(machine, "cpu"));
-  metaRow(out, "cores", textField(machine, "cores"));
-  metaRow(out, "os", textField(machine, "os"));
+  metaRow(out, "machine", machine.hostname);
+  metaRow(out, "cpu", machine.cpu);
+  metaRow(out, "cores", std::to_string(machine.cores));
+  metaRow(out, "os", machine.os);
   if (const auto g = numberField(peak, "gflops")) {
     std::string text = fmt(*g) + " GFLOP/s";
     if (const auto c = textField(peak, "cores"); !c.empty()) text += " on " + c + " cores";

@@ -62,7 +62,7 @@ std::string failuresCsv(const results::RunRecord& run) {
     if (!comparison::isRunFailure(test.verdict)) continue;
     const std::string verdictName = test.verdictWord();
     const std::string entry = test.name + "," + verdictName;
-    if (!test.unknownVerdict.empty()) {  // results.json is not trusted: an unknown word is shown, never listed
+    if (!test.knownVerdict()) {  // results.json is not trusted: an unknown word is shown, never listed
       text += "# " + commentText(entry) + ": unknown verdict, not listed\n";
     } else if (test.verdict == Verdict::UnexpectedPass) {
       text += "# " + commentText(entry) + ": passes now; remove its line from the expected-failures file (it was listed: " +

@@ -35,7 +35,7 @@ std::vector<comparison::Verdict> verdictColumns(const results::RunRecord& run) {
       occurred = occurred || (it != backend.counts.end() && it->second > 0);
     }
     for (const results::TestRecord& test : run.tests)
-      occurred = occurred || (test.unknownVerdict.empty() && test.verdict == verdict);
+      occurred = occurred || test.knownVerdict() == verdict;
     if (occurred) columns.push_back(verdict);
   }
   return columns;
@@ -52,12 +52,8 @@ std::string verdictBadge(std::string_view verdict) {
 
 std::string testAnchor(std::string_view testName) { return "test-" + percentEncodePath(testName); }
 
-bool needsAttention(const results::TestRecord& test) {
-  return !test.unknownVerdict.empty() || comparison::needsAttention(test.verdict);
-}
-
 std::string testLink(const results::TestRecord& test) {
-  if (!needsAttention(test)) return escapeText(test.name);
+  if (!test.needsAttention()) return escapeText(test.name);
   return "<a href=\"#" + escapeText(testAnchor(test.name)) + "\">" + escapeText(test.name) + "</a>";
 }
 
@@ -69,11 +65,11 @@ void header(std::ostream& out, const Page& page) {
   long long problems = 0, warnings = 0, skipped = 0, expected = 0, total = 0, survived = 0;
   for (const results::TestRecord& test : run.tests) {
     ++total;
-    const Outcome outcome = test.unknownVerdict.empty() ? comparison::ciOutcome(test.verdict) : Outcome::Failure;
+    const Outcome outcome = test.ciOutcome();
     // An expected failure is a skip to CI (it must not block), but to a
     // reader it is a known defect of the driver, not a test that could not run.
-    if (test.unknownVerdict.empty() && test.verdict == comparison::Verdict::QualityWarning) ++warnings;
-    else if (test.unknownVerdict.empty() && test.verdict == comparison::Verdict::ExpectedFail) ++expected;
+    if (test.knownVerdict() == comparison::Verdict::QualityWarning) ++warnings;
+    else if (test.knownVerdict() == comparison::Verdict::ExpectedFail) ++expected;
     else if (outcome == Outcome::Failure || outcome == Outcome::Error) ++problems;
     else if (outcome == Outcome::Skipped) ++skipped;
   }

@@ -20,9 +20,6 @@ struct Page {
 // Small pieces shared by the sections.
 std::string verdictBadge(std::string_view verdict);  // <span class="v v-Fail">Fail</span>
 std::string testAnchor(std::string_view testName);   // the id of a test's section
-// A test's section in "tests that need attention": every run failure, a
-// QualityWarning, a Flake and an unknown verdict word.
-bool needsAttention(const results::TestRecord& test);
 std::string testLink(const results::TestRecord& test);  // the name, linked to its section when it has one
 std::string cell(std::string_view text);             // <td>escaped</td>
 std::string numberCell(std::string_view text);       // <td class="n">escaped</td>

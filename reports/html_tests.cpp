@@ -102,7 +102,7 @@ void attentionSection(std::ostream& out, const Page& page, const results::TestRe
       figure(out, page, *path, label);
     }
   // A CI error (Crash, Timeout) is a test that did not run to its end.
-  const bool ended = test.unknownVerdict.empty() && comparison::ciOutcome(test.verdict) == Outcome::Error;
+  const bool ended = test.ciOutcome() == Outcome::Error;
   if (anyImage) out << "</div>\n";
   else if (!imagesDropped) out << "<p>No images: " << (ended ? "the test ended before a comparison." : "the run wrote none.") << "</p>\n";
   if (!evidence.summaryJson.empty())
@@ -137,7 +137,7 @@ void figure(std::ostream& out, const Page& page, const std::string& runRelative,
 void attentionSections(std::ostream& out, const Page& page) {
   std::vector<const results::TestRecord*> tests;
   for (const results::TestRecord& test : page.run.tests)
-    if (needsAttention(test)) tests.push_back(&test);
+    if (test.needsAttention()) tests.push_back(&test);
   out << "<h2 id=\"attention\">Tests that need attention (" << tests.size() << ")</h2>\n";
   if (tests.empty()) out << "<p>None: no Fail, Crash, Timeout, UnexpectedPass or QualityWarning.</p>\n";
   for (const results::TestRecord* test : tests) attentionSection(out, page, *test);
@@ -148,8 +148,7 @@ void detectedMismatchSections(std::ostream& out, const Page& page) {
   // the known mismatch (e.g. legacy baked falloff against real time) is off.
   std::vector<const results::TestRecord*> tests;
   for (const results::TestRecord& test : page.run.tests)
-    if (test.metrics && test.metrics->expectFail && test.unknownVerdict.empty() &&
-        test.verdict == comparison::Verdict::Pass)
+    if (test.metrics && test.metrics->expectFail && test.knownVerdict() == comparison::Verdict::Pass)
       tests.push_back(&test);
   if (tests.empty()) return;
   out << "<h2 id=\"expected-mismatches\">Known mismatches detected (" << tests.size() << ")</h2>\n"
@@ -164,7 +163,7 @@ void allTestsTable(std::ostream& out, const Page& page) {
          "<th>tightness</th><th>max error</th><th>failing pixels</th><th>popping score</th><th>total ms</th></tr>\n";
   for (const results::TestRecord& test : tests) {
     const auto& m = test.metrics;
-    out << "<tr" << (needsAttention(test) ? " class=\"bad\"" : "") << "><td>" << testLink(test) << "</td><td>"
+    out << "<tr" << (test.needsAttention() ? " class=\"bad\"" : "") << "><td>" << testLink(test) << "</td><td>"
         << verdictBadge(test.verdictWord()) << "</td>" << numberCell(m ? formatMeasured(m->tightness) : "-")
         << numberCell(m ? formatMeasured(m->maxAbsError) : "-")
         << numberCell(m ? std::to_string(m->failingPixels) : "-") << numberCell(formatOptional(test.poppingScore))

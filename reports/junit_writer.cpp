@@ -107,16 +107,15 @@ Case testCase(const results::TestRecord& test, const std::string& evidenceUrl) {
   c.name = test.name;
   if (c.name.empty()) c.name = test.group + "." + test.scene + "." + test.backend;
   c.seconds = test.timingsMs ? test.timingsMs->total / 1000.0 : 0;
-  const bool known = test.unknownVerdict.empty();
   // An unknown word is reported like a Fail: a report never turns what it
   // does not know into a pass.
-  c.outcome = known ? comparison::ciOutcome(test.verdict) : Outcome::Failure;
+  c.outcome = test.ciOutcome();
   c.type = test.verdictWord();
   const std::string message = lineOf(test.message);
   const std::string metrics = metricsLine(test.metrics);
   const std::string& reason = test.expectedReason;
   using comparison::Verdict;
-  switch (known ? test.verdict : Verdict::Fail) {
+  switch (test.knownVerdict().value_or(Verdict::Fail)) {
     case Verdict::ExpectedFail:
       c.message = "ExpectedFail: " + (reason.empty() ? std::string("listed as an expected failure") : reason);
       c.output = details();

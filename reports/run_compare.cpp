@@ -16,7 +16,8 @@ namespace reports {
 namespace {
 
 struct TestView {
-  std::string verdict;
+  std::string verdict;  // as the run says it
+  bool runFailure = false;  // an unknown word included (it reads as a Crash)
   std::optional<double> tightness;  // finite and not negative, else nullopt
 };
 
@@ -30,7 +31,7 @@ TestIndex indexTests(const results::RunRecord& run) {
   TestIndex index;
   for (const results::TestRecord& test : run.tests) {
     if (test.name.empty() || index.byName.contains(test.name)) continue;
-    TestView view{test.verdictWord(), std::nullopt};
+    TestView view{test.verdictWord(), comparison::isRunFailure(test.verdict), std::nullopt};
     if (test.metrics && !test.metrics->tightnessIsInfinite && test.metrics->tightness &&
         std::isfinite(*test.metrics->tightness) && *test.metrics->tightness >= 0)
       view.tightness = *test.metrics->tightness;
@@ -47,16 +48,10 @@ bool beyondTwice(double oldValue, double newValue) {
   return ratio > 2.0 || ratio < 0.5;
 }
 
-std::string number(double value) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.4g", value);
-  return text;
-}
-
 std::string ratioText(double oldValue, double newValue) {
   if (oldValue == 0) return "from 0";
   std::string text = "x";  // not "x" + ...: GCC 12 warns falsely (-Wrestrict) on that
-  text += number(newValue / oldValue);
+  text += formatNumber(newValue / oldValue);
   return text;
 }
 
@@ -145,10 +140,6 @@ bool RunComparison::unchanged() const {
          tightness.empty();
 }
 
-bool countsAsRunFailure(std::string_view verdict) {
-  const auto known = comparison::parseVerdict(verdict);
-  return !known || comparison::isRunFailure(*known);
-}
 
 RunComparison compareRuns(const results::RunRecord& oldRun, const results::RunRecord& newRun) {
   const TestIndex before = indexTests(oldRun);
@@ -164,8 +155,8 @@ RunComparison compareRuns(const results::RunRecord& oldRun, const results::RunRe
       continue;
     }
     const TestView& then = old->second;
-    const bool failedBefore = countsAsRunFailure(then.verdict);
-    const bool failsNow = countsAsRunFailure(now.verdict);
+    const bool failedBefore = then.runFailure;
+    const bool failsNow = now.runFailure;
     if (!failedBefore && failsNow)
       c.regressions.push_back({name, then.verdict, now.verdict});
     else if (failedBefore && !failsNow)
@@ -193,7 +184,7 @@ void printRunComparison(const RunComparison& c, std::string_view oldLabel, std::
   for (const auto& t : c.added) out << "new " << t.test << ": " << shownVerdict(t.verdict) << "\n";
   for (const auto& t : c.removed) out << "removed " << t.test << ": was " << shownVerdict(t.verdict) << "\n";
   for (const auto& t : c.tightness)
-    out << "tightness " << t.test << ": " << number(t.oldTightness) << " -> " << number(t.newTightness) << " ("
+    out << "tightness " << t.test << ": " << formatNumber(t.oldTightness) << " -> " << formatNumber(t.newTightness) << " ("
         << ratioText(t.oldTightness, t.newTightness) << ")\n";
   if (c.unchanged())
     out << "no change\n";
@@ -233,8 +224,8 @@ std::string runComparisonHtml(const RunComparison& c, const results::RunRecord& 
   } else {
     html << "<table>\n<tr><th>test</th><th>old</th><th>new</th><th>change</th></tr>\n";
     for (const auto& t : c.tightness)
-      html << "<tr><td>" << escapeText(t.test) << "</td><td class=\"n\">" << number(t.oldTightness)
-           << "</td><td class=\"n\">" << number(t.newTightness) << "</td><td class=\"n\">"
+      html << "<tr><td>" << escapeText(t.test) << "</td><td class=\"n\">" << formatNumber(t.oldTightness)
+           << "</td><td class=\"n\">" << formatNumber(t.newTightness) << "</td><td class=\"n\">"
            << escapeText(ratioText(t.oldTightness, t.newTightness)) << "</td></tr>\n";
     html << "</table>\n";
   }

@@ -44,11 +44,6 @@ struct RunComparison {
   bool unchanged() const;
 };
 
-// A verdict as results.json spells it counts against the run when
-// comparison::isRunFailure holds for it, or when parseVerdict does not know it
-// (a missing verdict included).
-bool countsAsRunFailure(std::string_view verdict);
-
 // Tests are matched by name; a test without a name is ignored, and of two
 // with one name the first counts. Lists follow the new run's order of tests
 // (removed ones the old run's).

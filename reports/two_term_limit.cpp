@@ -47,7 +47,7 @@ std::optional<TwoTermPoint> twoTermPointOf(const BenchEntry& e) {
 std::map<std::string, TwoTermFit> twoTermFits(const BenchSet& set) {
   std::map<std::string, std::vector<TwoTermPoint>> curves;
   for (const BenchEntry& e : set.entries) {
-    if (e.name.kind != "frame" || e.name.scene != "curve-lights" || e.name.mode != "all-lights" || !e.error.empty())
+    if (e.name.kind != results::bench::kFrame || e.name.scene != "curve-lights" || e.name.mode != "all-lights" || !e.error.empty())
       continue;
     if (const auto point = twoTermPointOf(e)) curves[e.section.empty() ? e.name.backend : e.section].push_back(*point);
   }

@@ -7,12 +7,6 @@ namespace {
 
 using namespace fields;
 
-Json lightsJson(const std::vector<BudgetLightRecord>& lights) {
-  Json array = Json::array();
-  for (const BudgetLightRecord& light : lights) array.push_back(light.toJson());
-  return array;
-}
-
 // A frame's numbers, in budget.json's order.
 constexpr std::pair<long long BudgetFrameRecord::*, const char*> kFrameCounts[] = {
     {&BudgetFrameRecord::frame, "frame"}, {&BudgetFrameRecord::pixelsCut, "pixels_cut"}};
@@ -50,7 +44,7 @@ Json BudgetFrameRecord::toJson() const {
   Json json = Json::object();
   for (const auto& [field, key] : kFrameCounts) json[key] = this->*field;
   for (const auto& [field, key] : kFrameLosses) json[key] = measuredJson(this->*field);
-  if (lights) json["lights"] = lightsJson(*lights);
+  if (lights) json["lights"] = arrayOf(*lights);
   return json;
 }
 
@@ -64,8 +58,7 @@ BudgetFrameRecord BudgetFrameRecord::fromJson(const Json& json) {
 
 Json SceneBudgetRecord::toJson() const {
   if (!error.empty()) return {{"error", error}};
-  Json frameList = Json::array();
-  for (const BudgetFrameRecord& f : frames) frameList.push_back(f.toJson());
+  const Json frameList = arrayOf(frames);
   if (!cuts) return {{"cuts", false}, {"frames", frameList}};
   Json images = {{"reach", reachImage}, {"kept", keptImage}, {"loss", lossImage}};
   if (!keptStripImage.empty()) images["kept_strip"] = keptStripImage;
@@ -73,7 +66,7 @@ Json SceneBudgetRecord::toJson() const {
           {"frames", frameList},
           {"maps_frame", mapsFrame},
           {"images", images},
-          {"lights_not_kept", lightsJson(lightsNotKept)}};
+          {"lights_not_kept", arrayOf(lightsNotKept)}};
 }
 
 SceneBudgetRecord SceneBudgetRecord::fromJson(const std::string& scene, const Json& json) {

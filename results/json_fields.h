@@ -59,6 +59,14 @@ inline std::vector<std::string> texts(const Json& json, const char* key) {
   return items;
 }
 
+// Records as a JSON array, each by its toJson.
+template <typename Record>
+Json arrayOf(const std::vector<Record>& records) {
+  Json array = Json::array();
+  for (const Record& record : records) array.push_back(record.toJson());
+  return array;
+}
+
 // The objects of the array at `key`, each read by `read`; what is no object is passed over.
 template <typename Record, typename Read>
 std::vector<Record> objects(const Json& json, const char* key, Read read) {

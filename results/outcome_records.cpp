@@ -72,14 +72,12 @@ WorstPixel WorstPixel::fromJson(const Json& json) {
 }
 
 Json Metrics::toJson() const {
-  Json worstPixels = Json::array();
-  for (const WorstPixel& p : worst) worstPixels.push_back(p.toJson());
   Json json = Json::object();
   for (const auto& [field, key] : kMetricCounts) json[key] = this->*field;
   for (const auto& [field, key] : kMetricErrors) json[key] = measuredJson(this->*field);
   json["tightness_is_infinite"] = tightnessIsInfinite;
   json["expect_fail"] = expectFail;
-  json["worst"] = worstPixels;
+  json["worst"] = arrayOf(worst);
   if (caught) {
     json["smallest_caught_brighter"] = measuredJson(caught->brighter);
     json["smallest_caught_darker"] = measuredJson(caught->darker);
@@ -151,13 +149,7 @@ EvidenceRecord EvidenceRecord::fromJson(const Json& json) {
 void writeOutcome(const TaskOutcome& outcome, Json& json) {
   json["message"] = outcome.message;
   json["metrics"] = outcome.metrics ? outcome.metrics->toJson() : Json(nullptr);
-  if (outcome.frames) {
-    Json frames = Json::array();
-    for (const FrameRecord& f : *outcome.frames) frames.push_back(f.toJson());
-    json["frames"] = frames;
-  } else {
-    json["frames"] = nullptr;
-  }
+  json["frames"] = outcome.frames ? arrayOf(*outcome.frames) : Json(nullptr);
   json["popping_score"] = measuredJson(outcome.poppingScore);
   json["timings_ms"] = outcome.timingsMs ? outcome.timingsMs->toJson() : Json(nullptr);
   json["evidence"] = outcome.evidence ? outcome.evidence->toJson() : Json(nullptr);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <utility>
@@ -47,6 +48,7 @@ struct StageTimes {
 // A value that is not finite is written as null (JSON has neither NaN nor
 // infinity): nullopt here.
 using Measured = std::optional<double>;
+inline Measured measuredOf(double value) { return std::isfinite(value) ? Measured(value) : std::nullopt; }
 
 // One of the worst pixels of the evidence frame, with what the reference
 // allows there: reference +- tolerance * toleranceScale per channel.

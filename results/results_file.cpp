@@ -29,8 +29,7 @@ void requireRecords(const Json& run, const char* arrayKey, const char* const (&k
   }
 }
 
-}  // namespace
-
+// The checks on JSON read already; `where` starts each message.
 RunRecord checkedRunRecord(const Json& json, const std::string& where) {
   if (!json.is_object() || json.value("format", Json()) != "lightcts-results")
     throw ResultsFileError(where + ": not a lightcts results.json (no \"format\": \"lightcts-results\")");
@@ -46,6 +45,8 @@ RunRecord checkedRunRecord(const Json& json, const std::string& where) {
     throw ResultsFileError(where + ": " + e.what());
   }
 }
+
+}  // namespace
 
 RunRecord readResultsFile(const std::filesystem::path& file) {
   std::ifstream in(file);

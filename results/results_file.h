@@ -30,7 +30,4 @@ class ResultsFileError : public std::invalid_argument {
 // Throws ResultsFileError "FILE: what".
 RunRecord readResultsFile(const std::filesystem::path& file);
 
-// The same checks on JSON read already; `where` starts each message.
-RunRecord checkedRunRecord(const Json& json, const std::string& where);
-
 }  // namespace results

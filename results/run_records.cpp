@@ -16,7 +16,7 @@ using comparison::Verdict;
 Verdict verdictAt(const Json& json, const char* key, std::string* unknownWord = nullptr) {
   const std::string word = text(json, key);
   const std::optional<Verdict> verdict = comparison::parseVerdict(word);
-  if (!verdict && unknownWord) *unknownWord = word;
+  if (!verdict && unknownWord) *unknownWord = word.empty() ? "unknown" : word;
   return verdict.value_or(Verdict::Crash);
 }
 
@@ -33,13 +33,6 @@ std::vector<Record> recordsAt(const Json& json, const char* key) {
   if (it == json.end() || !it->is_array()) return records;
   for (std::size_t i = 0; i < it->size(); ++i) records.push_back(Record::fromJson(objectAt(*it, i, key)));
   return records;
-}
-
-template <typename Record>
-Json arrayOf(const std::vector<Record>& records) {
-  Json array = Json::array();
-  for (const Record& record : records) array.push_back(record.toJson());
-  return array;
 }
 
 std::optional<long long> optionalInteger(const Json& json, const char* key) {
@@ -107,7 +100,6 @@ TestRecord TestRecord::fromJson(const Json& json) {
   for (const auto& [field, key] : kTestWords) t.*field = text(json, key);
   t.admissible = text(json, "admissible");
   t.verdict = verdictAt(json, "verdict", &t.unknownVerdict);
-  if (t.unknownVerdict.empty() && !comparison::parseVerdict(text(json, "verdict"))) t.unknownVerdict = "unknown";
   t.rawVerdict = verdictAt(json, "raw_verdict");
   t.expectedReason = text(json, "expected_reason");
   readOutcome(json, t);
@@ -118,6 +110,16 @@ TestRecord TestRecord::fromJson(const Json& json) {
 std::string TestRecord::verdictWord() const {
   return unknownVerdict.empty() ? std::string(comparison::verdictName(verdict)) : unknownVerdict;
 }
+
+std::optional<Verdict> TestRecord::knownVerdict() const {
+  return unknownVerdict.empty() ? std::optional<Verdict>(verdict) : std::nullopt;
+}
+
+comparison::CiOutcome TestRecord::ciOutcome() const {
+  return unknownVerdict.empty() ? comparison::ciOutcome(verdict) : comparison::CiOutcome::Failure;
+}
+
+bool TestRecord::needsAttention() const { return !unknownVerdict.empty() || comparison::needsAttention(verdict); }
 
 TaskTimes& TaskTimes::operator+=(const TaskTimes& other) {
   tasks += other.tasks;

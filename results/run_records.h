@@ -71,6 +71,11 @@ struct TestRecord : TaskOutcome {
   std::vector<AttemptRecord> attempts;  // a retried test's every attempt; empty (and not written) otherwise
 
   std::string verdictWord() const;  // unknownVerdict, else the verdict's name
+  // The verdict, none for an unknown word; and what it means to CI and to
+  // the report, where an unknown word is a failure that needs attention.
+  std::optional<comparison::Verdict> knownVerdict() const;
+  comparison::CiOutcome ciOutcome() const;
+  bool needsAttention() const;
   Json toJson() const;
   static TestRecord fromJson(const Json& json);
 };

@@ -53,7 +53,7 @@ ProcessOutcome runBenchProcess(const BenchOptions& options, std::vector<std::str
       console << line << '\n';  // Google Benchmark's console table, kept for people
       continue;
     }
-    if (status == WorkerProcess::ReadStatus::TimedOut || status == WorkerProcess::ReadStatus::Interrupted) {
+    if (status == WorkerProcess::ReadStatus::TimedOut) {
       outcome.how = "timed out after " + std::to_string(int(options.timeoutSeconds)) + " s (" + worker.finish(true) + ")";
       return outcome;
     }

@@ -8,20 +8,18 @@
 namespace runner {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 // The strip's maps are at most this wide: every frame of a path side by side.
 constexpr int kStripMapWidth = 96;
 
 results::BudgetFrameRecord budgetFrameRecord(const lighting::Frame& frame, const reference::LightBudget& budget,
                                              std::optional<double> poppingScore) {
-  const auto finite = [](double v) { return std::isfinite(v) ? results::Measured(v) : std::nullopt; };
   results::BudgetFrameRecord record{frame.index,
                                     budget.pixelsCut,
-                                    finite(budget.largestLoss),
-                                    finite(budget.summedLoss),
-                                    finite(budget.largestRelativeLoss),
-                                    poppingScore ? finite(*poppingScore) : std::nullopt,
+                                    results::measuredOf(budget.largestLoss),
+                                    results::measuredOf(budget.summedLoss),
+                                    results::measuredOf(budget.largestRelativeLoss),
+                                    poppingScore ? results::measuredOf(*poppingScore) : std::nullopt,
                                     std::vector<results::BudgetLightRecord>{}};
   for (const reference::LightBudgetOfLight& l : budget.lights)
     record.lights->push_back({l.light, frame.scene().lights[std::size_t(l.light)].name, l.reachPixels, l.keptPixels,

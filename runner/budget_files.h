@@ -8,8 +8,6 @@
 #include "reports/budget_maps.h"
 #include "results/budget_records.h"
 
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <optional>
 

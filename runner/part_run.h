@@ -11,8 +11,6 @@
 #include "results/run_records.h"
 #include "runner/worker_plan.h"
 
-#include <nlohmann/json.hpp>
-
 #include <chrono>
 #include <filesystem>
 #include <functional>

@@ -1,6 +1,7 @@
 #include "runner/run_assembly.h"
 
 #include "conformance/scene_lists.h"
+#include "reports/result_fields.h"
 #include "results/result_rules.h"
 
 #include <map>
@@ -11,12 +12,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 using comparison::BackendStatus;
 using comparison::Verdict;
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
-}
 
 // A model test's record. A test that passed on a retry is a Flake. A
 // retried test's record is that of its last failing attempt (for a Flake,
@@ -119,7 +114,7 @@ AssembledRecords assembleRecords(const RunInputs& inputs, const RunUnits& plan, 
     backend.status = run.status.status;
     backend.message = run.status.message;
     backend.device = run.device;
-    backend.expectedFailuresFile = joined(inputs.expected.files());
+    backend.expectedFailuresFile = reports::joined(inputs.expected.files());
     backend.counts = results::countVerdicts(records.tests, combination.suffix);
     backend.admissibleCounts = results::countAdmissibleVerdicts(records.tests, combination.suffix);
     backend.mutantCounts = results::countMutants(records.mutants, combination.suffix);

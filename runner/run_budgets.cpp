@@ -12,7 +12,6 @@
 namespace runner {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 namespace {
 

@@ -3,11 +3,8 @@
 #include "baking/sha256.h"
 #include "results/results_file.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <charconv>
-#include <fstream>
 #include <numeric>
 #include <stdexcept>
 #include <utility>

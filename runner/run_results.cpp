@@ -15,7 +15,6 @@
 
 namespace runner {
 
-using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
 std::string scenesDigest(const std::vector<fs::path>& sceneFiles, const fs::path& root) {

@@ -7,8 +7,6 @@
 #include "runner/run_plan.h"
 #include "results/run_records.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cstddef>
 #include <iosfwd>
 #include <optional>

@@ -12,8 +12,6 @@
 #include "runner/run_results.h"
 #include "runner/run_units.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -25,7 +23,6 @@
 namespace runner {
 namespace {
 
-using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 

@@ -56,8 +56,6 @@ void testHooks(const std::string& test) {
   }
 }
 
-results::Measured finiteOrNone(double value) { return std::isfinite(value) ? results::Measured(value) : std::nullopt; }
-
 // Metrics over every frame checked: counts summed, errors and tightness the
 // largest; the worst pixels are those of the evidence frame.
 results::Metrics metricsOf(const conformance::SceneCheck& check) {
@@ -80,17 +78,17 @@ results::Metrics metricsOf(const conformance::SceneCheck& check) {
     pixel.x = p.x;
     pixel.y = p.y;
     for (int c = 0; c < 3; ++c) {
-      pixel.result[std::size_t(c)] = finiteOrNone(p.result[c]);
-      pixel.reference[std::size_t(c)] = finiteOrNone(p.reference[c]);
-      pixel.tolerance[std::size_t(c)] = finiteOrNone(p.tolerance[c]);
+      pixel.result[std::size_t(c)] = results::measuredOf(p.result[c]);
+      pixel.reference[std::size_t(c)] = results::measuredOf(p.reference[c]);
+      pixel.tolerance[std::size_t(c)] = results::measuredOf(p.tolerance[c]);
     }
     pixel.toleranceScale = e.toleranceScale;
     m.worst.push_back(pixel);
   }
   m.maxFailingPixels = e.maxFailingPixels;
-  m.maxAbsError = finiteOrNone(maxAbs);
-  m.rmse = finiteOrNone(rmse);
-  m.tightness = finiteOrNone(tightness);
+  m.maxAbsError = results::measuredOf(maxAbs);
+  m.rmse = results::measuredOf(rmse);
+  m.tightness = results::measuredOf(tightness);
   m.tightnessIsInfinite = std::isinf(tightness);
   m.expectFail = e.expectFail;
   return m;
@@ -99,9 +97,9 @@ results::Metrics metricsOf(const conformance::SceneCheck& check) {
 std::vector<results::FrameRecord> framesOf(const conformance::SceneCheck& check) {
   std::vector<results::FrameRecord> frames;
   for (const conformance::FrameCheck& f : check.frames)
-    frames.push_back({f.frame, f.comparison.verdict, f.comparison.failingPixels, finiteOrNone(f.comparison.maxAbsError),
-                      finiteOrNone(f.comparison.maxErrorOverTolerance), finiteOrNone(f.idealError),
-                      finiteOrNone(f.poppingJump)});
+    frames.push_back({f.frame, f.comparison.verdict, f.comparison.failingPixels, results::measuredOf(f.comparison.maxAbsError),
+                      results::measuredOf(f.comparison.maxErrorOverTolerance), results::measuredOf(f.idealError),
+                      results::measuredOf(f.poppingJump)});
   return frames;
 }
 
@@ -139,9 +137,7 @@ class Worker {
   // The protocol's result line (runner/worker_protocol.h): the task's index in
   // the plan and its result.
   void emitResult(int index, const results::TaskResult& result) {
-    Json line = {{protocol::kKind, protocol::kResult}, {protocol::kIndex, index}};
-    line.update(result.toJson());
-    emit(out_, line);
+    emit(out_, protocol::resultLine(std::size_t(index), result));
   }
 
   // One backend at a time, built for the task's shader variant.
@@ -205,9 +201,9 @@ class Worker {
     result.metrics = metricsOf(check);
     if (check.caughtScale)  // docs/results-format.md: the smallest relative brightness errors caught
       result.metrics->caught =
-          results::CaughtBrightness{finiteOrNone(check.caughtScale->brighter), finiteOrNone(check.caughtScale->darker)};
+          results::CaughtBrightness{results::measuredOf(check.caughtScale->brighter), results::measuredOf(check.caughtScale->darker)};
     result.frames = framesOf(check);
-    result.poppingScore = check.poppingScore ? finiteOrNone(*check.poppingScore) : std::nullopt;
+    result.poppingScore = check.poppingScore ? results::measuredOf(*check.poppingScore) : std::nullopt;
     const conformance::StageTimings& t = check.timings;
     result.timingsMs = results::StageTimes{t.reference, t.pipeline, t.draw, t.readback, t.compare, t.total};
     result.evidence = std::nullopt;

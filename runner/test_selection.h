@@ -13,8 +13,6 @@
 
 #include "results/run_records.h"
 
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <string>
 #include <vector>

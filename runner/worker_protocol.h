@@ -10,6 +10,9 @@
 //                                                     --expect-driver mismatch)
 #pragma once
 
+#include "results/run_records.h"
+
+#include <cstddef>
 #include <string_view>
 
 namespace runner::protocol {
@@ -24,5 +27,12 @@ inline constexpr std::string_view kBackendError = "backend_error";
 inline constexpr std::string_view kDeviceField = "device";
 inline constexpr std::string_view kIndex = "index";
 inline constexpr std::string_view kMessage = "message";
+
+// Task `index`'s "result" line, as both a worker and a stand-in write it.
+inline nlohmann::ordered_json resultLine(std::size_t index, const results::TaskResult& result) {
+  nlohmann::ordered_json line = {{kKind, kResult}, {kIndex, index}};
+  line.update(result.toJson());
+  return line;
+}
 
 }  // namespace runner::protocol

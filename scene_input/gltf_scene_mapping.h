@@ -25,7 +25,7 @@ struct LightDefaults {
   std::optional<bool> shadows;
   std::optional<double> shadowStrength;
   std::optional<lighting::BakeFalloff> bakeFalloff;
-  std::function<void(lighting::Light&)> perLight;  // after the others are set; null when there is nothing
+  std::function<void(lighting::Light&)> perLight;  // after the others are set; null: nothing per light
 };
 
 // A primitive as a scene object: `material` instead of the file's when the

@@ -432,10 +432,13 @@ class SceneReader {
     if (auto shadows = member(node, "shadows")) defaults.shadows = readBool(*shadows);
     if (auto strength = member(node, "shadow_strength")) defaults.shadowStrength = readNumber(*strength, closed(0, 1));
     if (auto falloff = member(node, "bake_falloff")) defaults.bakeFalloff = readChoice(*falloff, kBakeFalloffs);
-    defaults.perLight = [this, node](Light& light) {
-      if (auto cookie = member(node, "cookie")) light.cookie = readCookie(*cookie, light);
-      readShadowMap(node, light);
-    };
+    // A cookie or a shadow map (the default one, where shadows are on) is
+    // checked for each light's type; without them nothing is read per light.
+    if (member(node, "cookie") || member(node, "shadow_map") || defaults.shadows.value_or(false))
+      defaults.perLight = [this, node](Light& light) {
+        if (auto cookie = member(node, "cookie")) light.cookie = readCookie(*cookie, light);
+        readShadowMap(node, light);
+      };
     return defaults;
   }
 

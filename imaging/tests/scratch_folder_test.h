@@ -1,9 +1,8 @@
 // The tests' scratch folder: a gtest fixture with a folder per test (unique
 // to the process, the suite and the test, a parameterised test's "/"
 // flattened), removed before and after the test, so a test sees exactly what
-// it and the code under it write there. Every test that writes files uses it
-// (or a fixture derived from it); the file writers' tests look at what a
-// write leaves in it.
+// it and the code under it write there; the file writers' tests look at what
+// a write leaves in it.
 #pragma once
 
 #include <gtest/gtest.h>

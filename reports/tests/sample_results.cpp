@@ -165,10 +165,7 @@ nlohmann::ordered_json sampleResults() {
      "status": "survived", "killed_by": [], "evidence": null},
     {"mutant": "distance-clamp-1e-4", "what": "distance clamped at 1e-4 <not 1e-6>", "backend": "gl-egl-softpipe",
      "status": "Crash", "killed_by": [], "evidence": null}
-  ],
-  "slowest": [{"name": "limits.popping-64.gl-egl-softpipe", "total_ms": 120000},
-              {"name": "attenuation.point-d-half-range.vulkan", "total_ms": 1500},
-              {"name": "limits.popping-64.vulkan", "total_ms": 320}]
+  ]
 }
 )json");
 }

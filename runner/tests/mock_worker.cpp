@@ -80,9 +80,7 @@ void emitResult(std::size_t index, const std::string& test, comparison::Verdict 
   result.metrics->comparedPixels = 16;
   result.metrics->failingPixels = verdict == comparison::Verdict::Fail ? 3 : 0;
   result.timingsMs = results::StageTimes{1.0, 1.0, 1.0, 1.0, 1.0, 5.0 + double(index)};
-  Json line = {{protocol::kKind, protocol::kResult}, {protocol::kIndex, index}};
-  line.update(result.toJson());
-  emit(line);
+  emit(protocol::resultLine(index, result));
 }
 
 }  // namespace
